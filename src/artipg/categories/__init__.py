@@ -1,0 +1,13 @@
+"""The explicit category registry: name -> :class:`artipg.rules.Category`.
+
+Adding a category: write ``categories/<name>.py`` defining ``RULE`` and add the module
+to ``_MODULES`` below (a test checks every module here is registered).
+"""
+
+from __future__ import annotations
+
+from artipg.categories import storage_furniture
+
+_MODULES = (storage_furniture,)
+
+REGISTRY = {m.RULE.name: m.RULE for m in _MODULES}

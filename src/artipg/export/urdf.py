@@ -1,0 +1,80 @@
+"""URDF writer (xml.etree) for an :class:`ArticulatedObject`.
+
+Links get one visual mesh, one collision element per convex piece (native box,
+cylinder and sphere where possible) and an inertial from the geometry. A ``<mujoco>``
+block lets MuJoCo import visuals and keep links separate.
+"""
+
+from __future__ import annotations
+
+import xml.etree.ElementTree as ET
+
+import numpy as np
+
+from artipg.export.meshes import link_collision_pieces, link_inertial, link_visual_mesh, obj_text
+from artipg.geometry.transforms import matrix_to_rpy
+
+
+def _fmt(v) -> str:
+    return " ".join(f"{float(x) + 0.0:.9g}" for x in v)  # + 0.0 turns -0 into 0
+
+
+def _origin(parent: ET.Element, T: np.ndarray) -> None:
+    rpy = matrix_to_rpy(T)
+    ET.SubElement(parent, "origin", xyz=_fmt(T[:3, 3]), rpy=_fmt(rpy))
+
+
+def build_urdf(obj, sections: int = 24) -> tuple[ET.Element, dict[str, str]]:
+    """URDF tree and mesh files {relative path: OBJ text} for ``obj``."""
+    files: dict[str, str] = {}
+    robot = ET.Element("robot", name=f"{obj.category}_{obj.seed}")
+    mj = ET.SubElement(robot, "mujoco")
+    ET.SubElement(mj, "compiler", discardvisual="false", fusestatic="false", strippath="false",
+                  balanceinertia="true")
+    for link in obj.links:
+        el = ET.SubElement(robot, "link", name=link.name)
+        mass, com, I = link_inertial(link, sections)
+        inertial = ET.SubElement(el, "inertial")
+        ET.SubElement(inertial, "origin", xyz=_fmt(com), rpy="0 0 0")
+        ET.SubElement(inertial, "mass", value=f"{mass:.9g}")
+        ET.SubElement(inertial, "inertia", ixx=f"{I[0, 0]:.9g}", ixy=f"{I[0, 1]:.9g}", ixz=f"{I[0, 2]:.9g}",
+                      iyy=f"{I[1, 1]:.9g}", iyz=f"{I[1, 2]:.9g}", izz=f"{I[2, 2]:.9g}")
+        vm = link_visual_mesh(link, sections)
+        if vm is not None:
+            path = f"meshes/{link.name}.obj"
+            files[path] = obj_text(vm.vertices, vm.faces)
+            vis = ET.SubElement(el, "visual", name=f"{link.name}_visual")
+            _origin(vis, np.eye(4))
+            ET.SubElement(ET.SubElement(vis, "geometry"), "mesh", filename=path)
+        for k, (piece, T) in enumerate(link_collision_pieces(link)):
+            col = ET.SubElement(el, "collision", name=f"{link.name}_c{k}")
+            _origin(col, T)
+            geom = ET.SubElement(col, "geometry")
+            if piece.shape == "box":
+                ET.SubElement(geom, "box", size=_fmt(piece.size))
+            elif piece.shape == "cylinder":
+                ET.SubElement(geom, "cylinder", radius=f"{piece.size[0]:.9g}", length=f"{piece.size[1]:.9g}")
+            elif piece.shape == "sphere":
+                ET.SubElement(geom, "sphere", radius=f"{piece.size[0]:.9g}")
+            else:
+                path = f"meshes/{link.name}_c{k}.obj"
+                files[path] = obj_text(piece.vertices, piece.faces)
+                ET.SubElement(geom, "mesh", filename=path)
+    for j in obj.joints:
+        el = ET.SubElement(robot, "joint", name=j.name, type=j.type)
+        _origin(el, j.origin)
+        ET.SubElement(el, "parent", link=j.parent)
+        ET.SubElement(el, "child", link=j.child)
+        if j.type != "fixed":
+            ET.SubElement(el, "axis", xyz=_fmt(j.axis))
+        if j.type in ("revolute", "prismatic"):
+            ET.SubElement(el, "limit", lower=f"{j.limits[0]:.9g}", upper=f"{j.limits[1]:.9g}", effort="100",
+                          velocity="1")
+        if j.type != "fixed":
+            ET.SubElement(el, "dynamics", damping="1.0", friction="0.0")
+    ET.indent(robot)
+    return robot, files
+
+
+def urdf_text(robot: ET.Element) -> str:
+    return '<?xml version="1.0"?>\n' + ET.tostring(robot, encoding="unicode") + "\n"

@@ -1,0 +1,226 @@
+"""Base class of the geometry templates and the primitive instance that places one.
+
+A geometry template is a family of solids with a fixed-length parameter vector. Every
+method works on *arrays* of parameter vectors so that an object's primitives of one
+kind are sampled in a single vectorised call:
+
+- ``area(P)``: surface area of each row of ``P`` (M, p), square metres;
+- ``sample(P, rng)``: one area-uniform surface point and outward unit normal per row;
+- ``sdf(p, x)``: signed distance (negative inside, exact on the surface) of points;
+- ``bounds(p)``: (2, 3) axis-aligned bounding box in the template's local frame;
+- ``mesh(p)``: a watertight ``trimesh.Trimesh`` (built only when exporting);
+- ``collision(p)``: convex pieces for simulators (see :class:`CollisionPiece`).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import ClassVar, NamedTuple
+
+import numpy as np
+
+from artipg.geometry.transforms import IDENTITY, apply
+
+TWO_PI = 2.0 * np.pi
+
+
+@dataclass(frozen=True)
+class CollisionPiece:
+    """One convex collision element, in the primitive's local frame.
+
+    ``shape`` is ``"box"`` (size = (sx, sy, sz)), ``"cylinder"`` (size = (radius,
+    length), along local z), ``"sphere"`` (size = (radius,)) or ``"mesh"`` (vertices
+    (V, 3) and faces (F, 3) of a convex mesh). ``pose`` is (4, 4) in the local frame.
+    """
+
+    shape: str
+    size: tuple = ()
+    pose: np.ndarray = field(default_factory=lambda: IDENTITY)
+    vertices: np.ndarray | None = None
+    faces: np.ndarray | None = None
+
+
+class GeometryTemplate:
+    """A parametric solid. Subclasses are stateless: all methods are classmethods."""
+
+    name: ClassVar[str] = ""
+    params: ClassVar[tuple[str, ...]] = ()
+
+    @classmethod
+    def component_areas(cls, P: np.ndarray) -> np.ndarray:  # pragma: no cover - abstract
+        """Areas (M, C) of the C surface components (faces, caps, walls) of each row."""
+        raise NotImplementedError
+
+    @classmethod
+    def sample_components(cls, P: np.ndarray, comp: np.ndarray, rng: np.random.Generator):  # pragma: no cover
+        """One area-uniform point and outward normal per row on component ``comp`` (k,).
+
+        Returns points (k, 3) and unit normals (k, 3) in the local frame.
+        """
+        raise NotImplementedError
+
+    @classmethod
+    def area(cls, P: np.ndarray) -> np.ndarray:
+        """Surface area (M,) of each row of ``P`` (M, p), square metres."""
+        return cls.component_areas(P).sum(axis=1)
+
+    @classmethod
+    def sample(cls, P: np.ndarray, rng: np.random.Generator) -> tuple[np.ndarray, np.ndarray]:
+        """One area-uniform surface point and outward unit normal per row of ``P``."""
+        return cls.sample_components(P, pick(cls.component_areas(P), rng), rng)
+
+    @classmethod
+    def sdf(cls, p, x: np.ndarray) -> np.ndarray:  # pragma: no cover - abstract
+        raise NotImplementedError
+
+    @classmethod
+    def bounds(cls, p) -> np.ndarray:  # pragma: no cover - abstract
+        raise NotImplementedError
+
+    @classmethod
+    def bounds_batch(cls, P: np.ndarray) -> np.ndarray:
+        """Local bounding boxes (M, 2, 3) of each row of ``P`` (M, p)."""
+        return np.stack([cls.bounds(p) for p in P]) if len(P) else np.zeros((0, 2, 3))
+
+    @classmethod
+    def solid_params(cls, p) -> tuple:
+        """Parameters of the closed solid (open tube pieces get their caps back)."""
+        return tuple(p)
+
+    @classmethod
+    def mesh(cls, p, sections: int = 32):  # pragma: no cover - abstract
+        raise NotImplementedError
+
+    @classmethod
+    def collision(cls, p) -> list[CollisionPiece]:
+        """Convex pieces; default: the convex hull of the mesh (exact for convex solids)."""
+        m = cls.mesh(p, sections=24).convex_hull
+        return [CollisionPiece("mesh", vertices=np.asarray(m.vertices), faces=np.asarray(m.faces))]
+
+    @classmethod
+    def volume(cls, p) -> float:
+        """Enclosed volume in cubic metres (from the mesh unless overridden)."""
+        return float(cls.mesh(p, sections=48).volume)
+
+    @classmethod
+    def inside(cls, p, x: np.ndarray) -> np.ndarray:
+        """Boolean (N,) mask of points strictly inside the solid."""
+        return cls.sdf(p, x) < 0.0
+
+
+class Primitive(NamedTuple):
+    """A geometry template instance placed in its part's frame.
+
+    Attributes
+    ----------
+    geom : type[GeometryTemplate]
+        The geometry template.
+    params : tuple of float
+        Its parameter vector, in ``geom.params`` order (metres, radians).
+    pose : (4, 4) ndarray
+        Local frame of the primitive expressed in the part frame.
+    role : str
+        Name of the primitive's role inside its part (``"grip"``, ``"front"``...),
+        used by region knowledge.
+    """
+
+    geom: type
+    params: tuple
+    pose: np.ndarray = IDENTITY
+    role: str = ""
+
+    def placed(self, T: np.ndarray) -> "Primitive":
+        """The same primitive with ``T`` applied on the left of its pose."""
+        return Primitive(self.geom, self.params, T @ self.pose, self.role)
+
+    def area(self) -> float:
+        return float(self.geom.area(np.asarray([self.params], dtype=float))[0])
+
+    def bounds(self) -> np.ndarray:
+        """Bounding box (2, 3) of the primitive in the part frame."""
+        return corners_bounds(self.geom.bounds(self.params), self.pose)
+
+    def sdf(self, x: np.ndarray) -> np.ndarray:
+        """Signed distance of part-frame points (N, 3)."""
+        Ti = np.linalg.inv(self.pose)
+        return self.geom.sdf(self.params, apply(Ti, np.asarray(x, dtype=float)))
+
+    def mesh(self, sections: int = 32):
+        m = self.geom.mesh(self.params, sections=sections)
+        m.apply_transform(self.pose)
+        return m
+
+
+_CORNER_SIGNS = np.array([[i, j, k] for i in (0, 1) for j in (0, 1) for k in (0, 1)], dtype=float)
+
+
+def corners_bounds(b: np.ndarray, T: np.ndarray) -> np.ndarray:
+    """Bounding box (2, 3) of box ``b`` (2, 3) after transform ``T`` (4, 4)."""
+    c = b[0] + _CORNER_SIGNS * (b[1] - b[0])
+    w = c @ T[:3, :3].T + T[:3, 3]
+    return np.stack([w.min(axis=0), w.max(axis=0)])
+
+
+# ---------------------------------------------------------------- sampling helpers
+
+def pick(weights: np.ndarray, rng: np.random.Generator) -> np.ndarray:
+    """Choose one column per row of ``weights`` (k, c) with probability ∝ weight."""
+    c = np.cumsum(weights, axis=1)
+    u = rng.random(len(weights)) * c[:, -1]
+    # a loop over the (few) columns beats a boolean reduction along a short axis
+    out = np.zeros(len(weights), dtype=np.int64)
+    for j in range(weights.shape[1] - 1):
+        out += u >= c[:, j]
+    return out
+
+
+def disk(r: np.ndarray, rng: np.random.Generator, r_in: np.ndarray | float = 0.0, arc=TWO_PI):
+    """Area-uniform points in annulus sectors ``r_in <= ρ <= r``, ``0 <= θ <= arc``.
+
+    Returns x, y arrays of shape (k,).
+    """
+    u, v = rng.random((2, len(r)))
+    rho = np.sqrt(r_in * r_in + u * (r * r - r_in * r_in))
+    th = v * arc
+    return rho * np.cos(th), rho * np.sin(th)
+
+
+def rect_points(centers: np.ndarray, sizes: np.ndarray, rng) -> np.ndarray:
+    """Uniform points on axis-aligned rectangles (k, 3): ``centers`` and ``sizes`` (k, 3),
+    the size being zero along each rectangle's normal axis."""
+    return centers + (rng.random(centers.shape) - 0.5) * sizes
+
+
+def polygon_sdf(q: np.ndarray, poly: np.ndarray) -> np.ndarray:
+    """Signed distance of 2-D points ``q`` (N, 2) to a closed polygon ``poly`` (V, 2).
+
+    Negative inside (even-odd rule), exact for any simple polygon.
+    """
+    a = poly
+    b = np.roll(poly, -1, axis=0)
+    e = b - a  # (V, 2)
+    w = q[:, None, :] - a[None]  # (N, V, 2)
+    ee = np.maximum((e * e).sum(axis=1), 1e-30)
+    t = np.clip((w * e[None]).sum(axis=2) / ee, 0.0, 1.0)
+    d = w - t[..., None] * e[None]
+    dist = np.sqrt((d * d).sum(axis=2).min(axis=1))
+    # crossing-number inside test
+    ay, by = a[:, 1][None], b[:, 1][None]
+    qy, qx = q[:, 1:2], q[:, 0:1]
+    cond = (ay > qy) != (by > qy)
+    xint = a[:, 0][None] + (qy - ay) * e[:, 0][None] / np.where(np.abs(e[:, 1]) > 1e-30, e[:, 1], 1e-30)[None]
+    inside = (cond & (qx < xint)).sum(axis=1) % 2 == 1
+    return np.where(inside, -dist, dist)
+
+
+def wedge_sdf(x: np.ndarray, arc: float) -> np.ndarray:
+    """Signed distance-like field of the wedge ``0 <= atan2(y, x) <= arc`` (exact sign).
+
+    Full turns (``arc >= 2π``) give -inf everywhere (no restriction).
+    """
+    if arc >= TWO_PI - 1e-9:
+        return np.full(len(x), -np.inf)
+    d0 = -x[:, 1]  # half-plane y >= 0
+    n1 = np.array([-np.sin(arc), np.cos(arc)])  # outward normal of the end plane
+    d1 = x[:, :2] @ n1
+    return np.maximum(d0, d1) if arc <= np.pi else np.minimum(d0, d1)

@@ -1,0 +1,191 @@
+"""Box-like geometry templates: the cuboid and the rectangular ring (frame)."""
+
+from __future__ import annotations
+
+import numpy as np
+import trimesh
+
+from artipg.geometry.base import CollisionPiece, GeometryTemplate, Primitive, rect_points
+from artipg.geometry.transforms import IDENTITY, translation
+
+
+
+class Cuboid(GeometryTemplate):
+    """Axis-aligned box of extents ``(sx, sy, sz)`` metres, centred on the origin."""
+
+    name = "cuboid"
+    params = ("sx", "sy", "sz")
+
+    @classmethod
+    def component_areas(cls, P):
+        sx, sy, sz = P[:, 0], P[:, 1], P[:, 2]
+        a, b, c = sy * sz, sx * sz, sx * sy
+        return np.column_stack([a, a, b, b, c, c])  # faces -x, +x, -y, +y, -z, +z
+
+    @classmethod
+    def area(cls, P):
+        sx, sy, sz = P[:, 0], P[:, 1], P[:, 2]
+        return 2.0 * (sx * sy + sy * sz + sx * sz)
+
+    @classmethod
+    def sample_components(cls, P, comp, rng):
+        ax = comp >> 1
+        sign = (comp & 1) * 2.0 - 1.0
+        pts = (rng.random(P.shape) - 0.5) * P
+        nrm = np.zeros(P.shape)
+        for a in range(3):
+            m = ax == a
+            pts[m, a] = 0.5 * sign[m] * P[m, a]
+            nrm[m, a] = sign[m]
+        return pts, nrm
+
+    @classmethod
+    def sdf(cls, p, x):
+        q = np.abs(x) - np.asarray(p, dtype=float) / 2.0
+        outside = np.linalg.norm(np.maximum(q, 0.0), axis=1)
+        inside = np.minimum(q.max(axis=1), 0.0)
+        return outside + inside
+
+    @classmethod
+    def bounds(cls, p):
+        h = np.asarray(p, dtype=float) / 2.0
+        return np.stack([-h, h])
+
+    @classmethod
+    def bounds_batch(cls, P):
+        return np.stack([-P / 2.0, P / 2.0], axis=1)
+
+    @classmethod
+    def mesh(cls, p, sections=32):
+        return trimesh.creation.box(extents=p)
+
+    @classmethod
+    def volume(cls, p):
+        return float(p[0] * p[1] * p[2])
+
+    @classmethod
+    def collision(cls, p):
+        return [CollisionPiece("box", tuple(float(v) for v in p))]
+
+
+class RectRing(GeometryTemplate):
+    """Rectangular frame: an ``ox`` x ``oy`` rectangle with a centred ``ix`` x ``iy``
+    hole, extruded ``depth`` along z and centred on the origin (a door frame, a
+    window sash, a picture frame)."""
+
+    name = "rect_ring"
+    params = ("ox", "oy", "depth", "ix", "iy")
+
+    @classmethod
+    def component_areas(cls, P):
+        C, S, N, A0, A1 = _RING_TABLES
+        sizes = np.einsum("kp,prc->krc", P, S)
+        rows = np.arange(16)
+        return sizes[:, rows, A0] * sizes[:, rows, A1]
+
+    @classmethod
+    def area(cls, P):
+        ox, oy, d, ix, iy = (P[:, i] for i in range(5))
+        return 2.0 * (ox * oy - ix * iy) + 2.0 * d * (ox + oy + ix + iy)
+
+    @classmethod
+    def sample_components(cls, P, comp, rng):
+        C, S, N, A0, A1 = _RING_TABLES
+        centers = np.einsum("kp,kpc->kc", P, C[:, comp].transpose(1, 0, 2))
+        sizes = np.einsum("kp,kpc->kc", P, S[:, comp].transpose(1, 0, 2))
+        return rect_points(centers, sizes, rng), N[comp]
+
+    @classmethod
+    def sdf(cls, p, x):
+        ox, oy, d, ix, iy = p
+        outer = Cuboid.sdf((ox, oy, d), x)
+        hole = Cuboid.sdf((ix, iy, 4.0 * d + 1.0), x)
+        return np.maximum(outer, -hole)
+
+    @classmethod
+    def bounds(cls, p):
+        return Cuboid.bounds((p[0], p[1], p[2]))
+
+    @classmethod
+    def bounds_batch(cls, P):
+        return Cuboid.bounds_batch(P[:, :3])
+
+    @classmethod
+    def pieces(cls, p) -> list[tuple[tuple[float, float, float], np.ndarray]]:
+        """The frame as four disjoint boxes: (size, pose) pairs."""
+        ox, oy, d, ix, iy = (float(v) for v in p)
+        bx, by = (ox - ix) / 2.0, (oy - iy) / 2.0
+        return [
+            ((ox, by, d), translation(0, (iy + by) / 2, 0)),
+            ((ox, by, d), translation(0, -(iy + by) / 2, 0)),
+            ((bx, iy, d), translation((ix + bx) / 2, 0, 0)),
+            ((bx, iy, d), translation(-(ix + bx) / 2, 0, 0)),
+        ]
+
+    @classmethod
+    def mesh(cls, p, sections=32):
+        boxes = [trimesh.creation.box(extents=s, transform=T) for s, T in cls.pieces(p)]
+        return trimesh.boolean.union(boxes, engine="manifold")
+
+    @classmethod
+    def volume(cls, p):
+        ox, oy, d, ix, iy = p
+        return float((ox * oy - ix * iy) * d)
+
+    @classmethod
+    def collision(cls, p):
+        return [CollisionPiece("box", s, T) for s, T in cls.pieces(p)]
+
+
+def _ring_tables():
+    """Rectangles of a :class:`RectRing` as linear maps of (ox, oy, d, ix, iy).
+
+    Returns centre and size coefficient tensors (5, 16, 3), unit normals (16, 3) and
+    the two in-plane axes (16,) of each rectangle.
+    """
+    C = np.zeros((5, 16, 3))
+    S = np.zeros((5, 16, 3))
+    N = np.zeros((16, 3))
+    OX, OY, D, IX, IY = np.eye(5)
+    half = 0.5
+    rects = []
+    for zs in (-1.0, 1.0):  # front/back faces as four strips
+        for ys in (-1.0, 1.0):
+            # centre y = ys*(iy/2 + (oy-iy)/4) = ys*(oy+iy)/4, size (ox, (oy-iy)/2, 0)
+            rects.append(((0 * OX, ys * (OY + IY) / 4, zs * D * half), (OX, (OY - IY) / 2, 0 * OX), (0, 0, zs)))
+        for xs in (-1.0, 1.0):
+            rects.append(((xs * (OX + IX) / 4, 0 * OX, zs * D * half), ((OX - IX) / 2, IY, 0 * OX), (0, 0, zs)))
+    for (W, H), inward in (((OX, OY), 1.0), ((IX, IY), -1.0)):  # outer and inner walls
+        for xs in (-1.0, 1.0):
+            rects.append(((xs * W / 2, 0 * OX, 0 * OX), (0 * OX, H, D), (xs * inward, 0, 0)))
+        for ys in (-1.0, 1.0):
+            rects.append(((0 * OX, ys * H / 2, 0 * OX), (W, 0 * OX, D), (0, ys * inward, 0)))
+    A0 = np.zeros(16, dtype=int)
+    A1 = np.zeros(16, dtype=int)
+    for r, (c, sz, n) in enumerate(rects):
+        for ax in range(3):
+            C[:, r, ax] = c[ax]
+            S[:, r, ax] = sz[ax]
+        N[r] = n
+        a0, a1 = [ax for ax in range(3) if n[ax] == 0]
+        A0[r], A1[r] = a0, a1
+    return C, S, N, A0, A1
+
+
+_RING_TABLES = _ring_tables()
+
+
+def cuboid(sx: float, sy: float, sz: float, pose: np.ndarray = IDENTITY, role: str = "") -> Primitive:
+    """A :class:`Cuboid` of extents (sx, sy, sz) metres centred at ``pose``."""
+    return Primitive(Cuboid, (float(sx), float(sy), float(sz)), pose, role)
+
+
+def cuboid_between(lo, hi, role: str = "") -> Primitive:
+    """An axis-aligned :class:`Cuboid` spanning corners ``lo`` and ``hi`` (3,) in metres."""
+    return Primitive(Cuboid, (float(hi[0] - lo[0]), float(hi[1] - lo[1]), float(hi[2] - lo[2])),
+                     translation(0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1]), 0.5 * (lo[2] + hi[2])), role)
+
+
+def rect_ring(ox, oy, depth, ix, iy, pose: np.ndarray = IDENTITY, role: str = "") -> Primitive:
+    """A :class:`RectRing` frame (outer ox x oy, hole ix x iy, thickness ``depth`` along z)."""
+    return Primitive(RectRing, (float(ox), float(oy), float(depth), float(ix), float(iy)), pose, role)

@@ -1,0 +1,517 @@
+"""Solids of revolution about the local z axis: frustum (cylinder, cone), ring (hollow
+cylinder), sphere segment and torus, the last three optionally cut to an arc
+``0 <= θ <= arc`` measured from +x towards +y."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import trimesh
+
+from artipg.geometry.base import (
+    TWO_PI,
+    CollisionPiece,
+    GeometryTemplate,
+    Primitive,
+    disk,
+    polygon_sdf,
+    wedge_sdf,
+)
+from artipg.geometry.transforms import IDENTITY
+
+FULL = TWO_PI
+
+
+def _is_full(arc) -> np.ndarray:
+    return np.asarray(arc) >= TWO_PI - 1e-9
+
+
+def revolve_mesh(profile, arc: float = FULL, sections: int = 32, cap_start: bool = True,
+                 cap_end: bool = True, closed_profile: bool = True) -> trimesh.Trimesh:
+    """Mesh of a (ρ, z) profile revolved about z from θ = 0 to θ = ``arc``.
+
+    Parameters
+    ----------
+    profile : (P, 2) array_like
+        Profile vertices (ρ >= 0, z) in counter-clockwise order in the (ρ, z) plane.
+        Vertices on the axis (ρ = 0) are shared by all sections.
+    arc : float
+        Swept angle in radians; a full turn gives a closed surface of revolution.
+    sections : int
+        Segments for a full turn (scaled down for partial arcs, at least 2).
+    cap_start, cap_end : bool
+        Close a partial arc with the (convex) profile polygon at θ = 0 / θ = arc.
+    closed_profile : bool
+        Connect the last profile vertex back to the first.
+
+    Returns
+    -------
+    trimesh.Trimesh
+        Outward-oriented mesh (watertight for closed profiles and full or capped arcs).
+    """
+    prof = np.asarray(profile, dtype=float)
+    full = arc >= TWO_PI - 1e-9
+    n_sec = max(2, int(math.ceil(sections * arc / TWO_PI)))
+    n_th = n_sec if full else n_sec + 1
+    th = np.linspace(0.0, arc, n_sec + 1)[:n_th]
+    P = len(prof)
+    rho, z = prof[:, 0], prof[:, 1]
+    V = np.stack(
+        [rho[None, :] * np.cos(th)[:, None], rho[None, :] * np.sin(th)[:, None],
+         np.broadcast_to(z, (n_th, P))], axis=2).reshape(-1, 3)
+    n_edges = P if closed_profile else P - 1
+    i = np.arange(n_edges)
+    i1 = (i + 1) % P
+    j = np.arange(n_sec)
+    j1 = (j + 1) % n_th
+    a = (j[:, None] * P + i[None]).ravel()
+    b = (j[:, None] * P + i1[None]).ravel()
+    c = (j1[:, None] * P + i1[None]).ravel()
+    d = (j1[:, None] * P + i[None]).ravel()
+    faces = [np.stack([a, c, b], 1), np.stack([a, d, c], 1)]
+    verts = [V]
+    if not full:
+        centroid = prof.mean(axis=0)
+        for on, jj, sign in ((cap_start, 0, -1.0), (cap_end, n_th - 1, 1.0)):
+            if not on:
+                continue
+            t = th[jj]
+            cidx = len(np.concatenate(verts))
+            verts.append(np.array([[centroid[0] * math.cos(t), centroid[0] * math.sin(t), centroid[1]]]))
+            ring = jj * P + np.arange(P)
+            tri = np.stack([np.full(P, cidx), ring, np.roll(ring, -1)], 1)
+            # orient along the outward normal of the cut plane
+            Vall = np.concatenate(verts)
+            nrm = np.cross(Vall[tri[0, 1]] - Vall[tri[0, 0]], Vall[tri[0, 2]] - Vall[tri[0, 0]])
+            want = sign * np.array([-math.sin(t), math.cos(t), 0.0])
+            if np.dot(nrm, want) < 0:
+                tri = tri[:, ::-1]
+            faces.append(tri)
+    m = trimesh.Trimesh(np.concatenate(verts), np.concatenate(faces), process=True)
+    m.update_faces(m.nondegenerate_faces())
+    m.remove_unreferenced_vertices()
+    return m
+
+
+def _sample_band(r0, r1, z0, z1, th, rng):
+    """Area-uniform points on conical bands between (r0, z0) and (r1, z1) at angles th."""
+    u = rng.random(len(r0))
+    dr = r1 - r0
+    flat = np.abs(dr) < 1e-12
+    safe = np.where(flat, 1.0, dr)
+    s = np.where(flat, u, (np.sqrt(r0 * r0 + u * (r1 * r1 - r0 * r0)) - r0) / safe)
+    r = r0 + dr * s
+    z = z0 + (z1 - z0) * s
+    c, si = np.cos(th), np.sin(th)
+    pts = np.column_stack([r * c, r * si, z])
+    nz = -dr
+    nr = z1 - z0
+    ln = np.sqrt(nr * nr + nz * nz)
+    nrm = np.column_stack([nr * c / ln, nr * si / ln, nz / ln])
+    return pts, nrm
+
+
+class Frustum(GeometryTemplate):
+    """Frustum of a cone along z: radius ``r0`` at z = -h/2, ``r1`` at z = +h/2.
+
+    ``cap0``/``cap1`` (1 or 0) say whether the bottom/top discs are part of the surface
+    (open pieces are used inside swept tubes). A cylinder has r0 = r1, a cone r1 = 0.
+    """
+
+    name = "frustum"
+    params = ("r0", "r1", "h", "cap0", "cap1")
+
+    @classmethod
+    def component_areas(cls, P):
+        r0, r1, h, c0, c1 = P.T
+        return np.column_stack([np.pi * (r0 + r1) * np.hypot(h, r1 - r0), np.pi * c0 * r0 * r0,
+                                np.pi * c1 * r1 * r1])
+
+    @classmethod
+    def sample_components(cls, P, comp, rng):
+        r0, r1, h, c0, c1 = P.T
+        th = rng.random(len(P)) * TWO_PI
+        pts, nrm = _sample_band(r0, r1, -h / 2, h / 2, th, rng)
+        cap = comp > 0
+        if cap.any():
+            top = comp[cap] == 2
+            rr = np.where(top, r1[cap], r0[cap])
+            x, y = disk(rr, rng)
+            z = np.where(top, 0.5, -0.5) * h[cap]
+            pts[cap] = np.column_stack([x, y, z])
+            nrm[cap] = 0.0
+            nrm[cap, 2] = np.where(top, 1.0, -1.0)
+        return pts, nrm
+
+    @classmethod
+    def _profile(cls, p):
+        r0, r1, h = p[0], p[1], p[2]
+        return np.array([[-r0, -h / 2], [r0, -h / 2], [r1, h / 2], [-r1, h / 2]])
+
+    @classmethod
+    def sdf(cls, p, x):
+        q = np.stack([np.hypot(x[:, 0], x[:, 1]), x[:, 2]], axis=1)
+        return polygon_sdf(q, cls._profile(p))
+
+    @classmethod
+    def bounds(cls, p):
+        r = max(p[0], p[1])
+        return np.array([[-r, -r, -p[2] / 2], [r, r, p[2] / 2]])
+
+    @classmethod
+    def bounds_batch(cls, P):
+        r = np.maximum(P[:, 0], P[:, 1])
+        h = P[:, 2] / 2
+        lo = np.stack([-r, -r, -h], axis=1)
+        return np.stack([lo, -lo], axis=1)
+
+    @classmethod
+    def solid_params(cls, p):
+        return (p[0], p[1], p[2], 1.0, 1.0)
+
+    @classmethod
+    def mesh(cls, p, sections=32):
+        r0, r1, h, c0, c1 = p
+        prof = [[r0, -h / 2], [r1, h / 2]]
+        if c1:
+            prof.append([0.0, h / 2])
+        if c0:
+            prof.insert(0, [0.0, -h / 2])
+        return revolve_mesh(prof, sections=sections, closed_profile=bool(c0 and c1))
+
+    @classmethod
+    def volume(cls, p):
+        r0, r1, h = p[0], p[1], p[2]
+        return float(np.pi * h / 3.0 * (r0 * r0 + r0 * r1 + r1 * r1))
+
+    @classmethod
+    def collision(cls, p):
+        if abs(p[0] - p[1]) < 1e-9:
+            return [CollisionPiece("cylinder", (float(p[0]), float(p[2])))]
+        return super().collision((p[0], p[1], p[2], 1.0, 1.0))
+
+
+class Ring(GeometryTemplate):
+    """Hollow cylinder (tube wall) between radii ``r_in`` < ``r_out`` at its bottom,
+    height ``h`` centred on z = 0, swept over ``0 <= θ <= arc``. With ``taper`` != 0
+    both radii grow by ``taper`` from bottom to top (a tapered bucket or pot wall)."""
+
+    name = "ring"
+    params = ("r_out", "r_in", "h", "arc", "taper")
+
+    @staticmethod
+    def _slant(h, taper):
+        return np.hypot(h, taper)
+
+    @classmethod
+    def component_areas(cls, P):
+        ro, ri, h, arc, tp = P.T
+        sl = np.hypot(h, tp)
+        end = np.where(_is_full(arc), 0.0, (ro - ri) * h)
+        bot = arc / 2 * (ro * ro - ri * ri)
+        top = arc / 2 * ((ro + tp) ** 2 - (ri + tp) ** 2)
+        # outer wall, inner wall, bottom, top, end at θ = 0, end at θ = arc
+        return np.column_stack([arc * (ro + tp / 2) * sl, arc * (ri + tp / 2) * sl, bot, top, end, end])
+
+    @classmethod
+    def sample_components(cls, P, comp, rng):
+        ro, ri, h, arc, tp = P.T
+        k = len(P)
+        th = rng.random(k) * arc
+        inner = comp == 1
+        r0 = np.where(inner, ri, ro)
+        pts, nrm = _sample_band(r0, r0 + tp, -h / 2, h / 2, th, rng)
+        nrm[inner] *= -1.0
+        ann = (comp == 2) | (comp == 3)
+        if ann.any():
+            top = comp[ann] == 3
+            off = np.where(top, tp[ann], 0.0)
+            a_, b_ = ri[ann] + off, ro[ann] + off
+            rho = np.sqrt(a_ * a_ + rng.random(len(a_)) * (b_ * b_ - a_ * a_))
+            ta = th[ann]
+            pts[ann] = np.column_stack([rho * np.cos(ta), rho * np.sin(ta), np.where(top, 0.5, -0.5) * h[ann]])
+            nrm[ann] = 0.0
+            nrm[ann, 2] = np.where(top, 1.0, -1.0)
+        end = comp >= 4
+        if end.any():
+            te = np.where(comp[end] == 4, 0.0, arc[end])
+            u, v = rng.random((2, int(end.sum())))
+            z = (v - 0.5) * h[end]
+            re = ri[end] + u * (ro[end] - ri[end]) + v * tp[end]
+            ce, se = np.cos(te), np.sin(te)
+            pts[end] = np.column_stack([re * ce, re * se, z])
+            sg = np.where(comp[end] == 4, -1.0, 1.0)
+            nrm[end] = np.column_stack([-se * sg, ce * sg, np.zeros(len(te))])
+        return pts, nrm
+
+    @staticmethod
+    def _profile(p):
+        ro, ri, h, tp = p[0], p[1], p[2], p[4]
+        return np.array([[ri, -h / 2], [ro, -h / 2], [ro + tp, h / 2], [ri + tp, h / 2]])
+
+    @classmethod
+    def sdf(cls, p, x):
+        q = np.stack([np.hypot(x[:, 0], x[:, 1]), x[:, 2]], axis=1)
+        return np.maximum(polygon_sdf(q, cls._profile(p)), wedge_sdf(x, p[3]))
+
+    @classmethod
+    def bounds(cls, p):
+        ro, ri, h, arc, tp = p
+        return _arc_bounds(min(ri, ri + tp), max(ro, ro + tp), arc, -h / 2, h / 2)
+
+    @classmethod
+    def bounds_batch(cls, P):
+        ro, ri, h, arc, tp = P.T
+        return _arc_bounds_batch(np.minimum(ri, ri + tp), np.maximum(ro, ro + tp), arc, -h / 2, h / 2)
+
+    @classmethod
+    def mesh(cls, p, sections=32):
+        return revolve_mesh(cls._profile(p), arc=min(p[3], FULL), sections=sections)
+
+    @classmethod
+    def volume(cls, p):
+        ro, ri, h, arc, tp = p
+        # Pappus: profile area times the path length of its centroid
+        return float(min(arc, FULL) * (ro - ri) * h * ((ro + ri) / 2 + tp / 2))
+
+    @classmethod
+    def collision(cls, p):
+        prof = cls._profile(p)
+        return _sector_hulls(lambda a: revolve_mesh(prof, arc=a, sections=int(TWO_PI / a) + 1), p[3])
+
+
+class Sphere(GeometryTemplate):
+    """Sphere of radius ``R`` about the origin, cut to the slab ``z_lo <= z <= z_hi``
+    (a dome, a bowl bottom, a knob cap); cut planes are closed by flat discs."""
+
+    name = "sphere"
+    params = ("R", "z_lo", "z_hi")
+
+    @classmethod
+    def component_areas(cls, P):
+        R, lo, hi = P.T
+        return np.column_stack([TWO_PI * R * (hi - lo), np.pi * np.maximum(R * R - lo * lo, 0.0),
+                                np.pi * np.maximum(R * R - hi * hi, 0.0)])
+
+    @classmethod
+    def sample_components(cls, P, comp, rng):
+        R, lo, hi = P.T
+        k = len(P)
+        u, th = rng.random((2, k))
+        th = th * TWO_PI
+        z = lo + u * (hi - lo)  # Archimedes: z is uniform on a sphere zone
+        rho = np.sqrt(np.maximum(R * R - z * z, 0.0))
+        pts = np.column_stack([rho * np.cos(th), rho * np.sin(th), z])
+        nrm = pts / R[:, None]
+        cap = comp > 0
+        if cap.any():
+            top = comp[cap] == 2
+            zc = np.where(top, hi[cap], lo[cap])
+            x, y = disk(np.sqrt(np.maximum(R[cap] ** 2 - zc * zc, 0.0)), rng)
+            pts[cap] = np.column_stack([x, y, zc])
+            nrm[cap] = 0.0
+            nrm[cap, 2] = np.where(top, 1.0, -1.0)
+        return pts, nrm
+
+    @classmethod
+    def sdf(cls, p, x):
+        R, lo, hi = p
+        return np.maximum.reduce([np.linalg.norm(x, axis=1) - R, lo - x[:, 2], x[:, 2] - hi])
+
+    @classmethod
+    def bounds(cls, p):
+        R, lo, hi = p
+        r = R if lo <= 0.0 <= hi else math.sqrt(max(R * R - min(lo * lo, hi * hi), 0.0))
+        return np.array([[-r, -r, lo], [r, r, hi]])
+
+    @classmethod
+    def bounds_batch(cls, P):
+        R, lo, hi = P.T
+        r = np.where((lo <= 0) & (hi >= 0), R, np.sqrt(np.maximum(R * R - np.minimum(lo * lo, hi * hi), 0.0)))
+        return np.stack([np.stack([-r, -r, lo], 1), np.stack([r, r, hi], 1)], axis=1)
+
+    @classmethod
+    def mesh(cls, p, sections=32):
+        R, lo, hi = p
+        a0, a1 = math.asin(max(-1.0, lo / R)), math.asin(min(1.0, hi / R))
+        n = max(4, int(sections * (a1 - a0) / math.pi) + 1)
+        a = np.linspace(a0, a1, n)
+        prof = np.stack([R * np.cos(a), R * np.sin(a)], axis=1)
+        prof[np.abs(prof[:, 0]) < 1e-12, 0] = 0.0
+        prof = list(prof)
+        if prof[-1][0] > 0:
+            prof.append(np.array([0.0, hi]))
+        if prof[0][0] > 0:
+            prof.insert(0, np.array([0.0, lo]))
+        return revolve_mesh(prof, sections=sections)
+
+    @classmethod
+    def volume(cls, p):
+        R, lo, hi = p
+        return float(np.pi * ((R * R * hi - hi ** 3 / 3) - (R * R * lo - lo ** 3 / 3)))
+
+    @classmethod
+    def collision(cls, p):
+        R, lo, hi = p
+        if lo <= -R + 1e-9 and hi >= R - 1e-9:
+            return [CollisionPiece("sphere", (float(R),))]
+        return super().collision(p)
+
+
+class Torus(GeometryTemplate):
+    """Torus about z with centre-line radius ``R`` and tube radius ``r`` (< R), swept over
+    ``0 <= θ <= arc``; ``cap0``/``cap1`` close the ends of a partial arc with discs."""
+
+    name = "torus"
+    params = ("R", "r", "arc", "cap0", "cap1")
+
+    @classmethod
+    def component_areas(cls, P):
+        R, r, arc, c0, c1 = P.T
+        part = ~_is_full(arc)
+        cap = np.pi * r * r
+        return np.column_stack([TWO_PI * r * R * arc, cap * c0 * part, cap * c1 * part])
+
+    @classmethod
+    def sample_components(cls, P, comp, rng):
+        R, r, arc, c0, c1 = P.T
+        k = len(P)
+        # tube angle v has density ∝ R + r cos v: rejection sampling, vectorised
+        v = np.empty(k)
+        todo = np.arange(k)
+        while len(todo):
+            cand = rng.random(len(todo)) * TWO_PI
+            acc = rng.random(len(todo)) * (R[todo] + r[todo]) <= R[todo] + r[todo] * np.cos(cand)
+            v[todo[acc]] = cand[acc]
+            todo = todo[~acc]
+        th = rng.random(k) * arc
+        cv, sv, ct, st = np.cos(v), np.sin(v), np.cos(th), np.sin(th)
+        rho = R + r * cv
+        pts = np.column_stack([rho * ct, rho * st, r * sv])
+        nrm = np.column_stack([cv * ct, cv * st, sv])
+        cap = comp > 0
+        if cap.any():
+            end = comp[cap] == 2
+            te = np.where(end, arc[cap], 0.0)
+            x, y = disk(r[cap], rng)  # x along ρ, y along z
+            ce, se = np.cos(te), np.sin(te)
+            rr = R[cap] + x
+            pts[cap] = np.column_stack([rr * ce, rr * se, y])
+            sg = np.where(end, 1.0, -1.0)
+            nrm[cap] = np.column_stack([-se * sg, ce * sg, np.zeros(len(te))])
+        return pts, nrm
+
+    @classmethod
+    def sdf(cls, p, x):
+        R, r, arc = p[0], p[1], p[2]
+        rho = np.hypot(x[:, 0], x[:, 1])
+        return np.maximum(np.hypot(rho - R, x[:, 2]) - r, wedge_sdf(x, arc))
+
+    @classmethod
+    def bounds(cls, p):
+        R, r, arc = p[0], p[1], p[2]
+        return _arc_bounds(R - r, R + r, arc, -r, r)
+
+    @classmethod
+    def solid_params(cls, p):
+        return (p[0], p[1], p[2], 1.0, 1.0)
+
+    @classmethod
+    def bounds_batch(cls, P):
+        R, r, arc = P[:, 0], P[:, 1], P[:, 2]
+        return _arc_bounds_batch(R - r, R + r, arc, -r, r)
+
+    @classmethod
+    def _profile(cls, p, sections):
+        R, r = p[0], p[1]
+        n = max(8, sections // 2)
+        a = np.linspace(0.0, TWO_PI, n, endpoint=False)
+        return np.stack([R + r * np.cos(a), r * np.sin(a)], axis=1)
+
+    @classmethod
+    def mesh(cls, p, sections=32):
+        R, r, arc, c0, c1 = p
+        return revolve_mesh(cls._profile(p, sections), arc=min(arc, FULL), sections=sections,
+                            cap_start=bool(c0), cap_end=bool(c1))
+
+    @classmethod
+    def volume(cls, p):
+        R, r, arc = p[0], p[1], p[2]
+        return float(np.pi * r * r * R * min(arc, FULL))
+
+    @classmethod
+    def collision(cls, p):
+        return _sector_hulls(lambda a: revolve_mesh(cls._profile(p, 16), arc=a, sections=int(TWO_PI / a) + 1), p[2])
+
+
+def _arc_bounds(r_lo, r_hi, arc, z0, z1):
+    """Bounding box of an annular sector r_lo..r_hi, 0..arc, extruded over z0..z1."""
+    arc = min(float(arc), FULL)
+    angles = [0.0, arc] + [a for a in (0.5 * np.pi, np.pi, 1.5 * np.pi) if a < arc]
+    pts = [(r * math.cos(a), r * math.sin(a)) for a in angles for r in (r_lo, r_hi)]
+    xy = np.array(pts)
+    return np.array([[xy[:, 0].min(), xy[:, 1].min(), z0], [xy[:, 0].max(), xy[:, 1].max(), z1]])
+
+
+def _arc_bounds_batch(r_lo, r_hi, arc, z0, z1):
+    """Vectorised :func:`_arc_bounds` over rows; returns (M, 2, 3)."""
+    arc = np.minimum(arc, FULL)
+    cand = np.stack([np.zeros_like(arc), arc, np.full_like(arc, 0.5 * np.pi), np.full_like(arc, np.pi),
+                     np.full_like(arc, 1.5 * np.pi)], axis=1)
+    ok = np.ones_like(cand, dtype=bool)
+    ok[:, 2:] = cand[:, 2:] < arc[:, None]
+    c, s = np.cos(cand), np.sin(cand)
+    xs = np.concatenate([c * r_lo[:, None], c * r_hi[:, None]], axis=1)
+    ys = np.concatenate([s * r_lo[:, None], s * r_hi[:, None]], axis=1)
+    ok2 = np.concatenate([ok, ok], axis=1)
+    lo = np.stack([np.where(ok2, xs, np.inf).min(1), np.where(ok2, ys, np.inf).min(1), z0], axis=1)
+    hi = np.stack([np.where(ok2, xs, -np.inf).max(1), np.where(ok2, ys, -np.inf).max(1), z1], axis=1)
+    return np.stack([lo, hi], axis=1)
+
+
+def _sector_hulls(make, arc, max_step=math.pi / 16):
+    """Split a swept solid into convex hulls of sectors of at most ``max_step`` radians."""
+    arc = min(float(arc), FULL)
+    n = max(1, int(math.ceil(arc / max_step)))
+    step = arc / n
+    base = make(step).convex_hull
+    out = []
+    for i in range(n):
+        c, s = math.cos(i * step), math.sin(i * step)
+        Rz = np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
+        out.append(CollisionPiece("mesh", vertices=np.asarray(base.vertices) @ Rz.T, faces=np.asarray(base.faces)))
+    return out
+
+
+# ---------------------------------------------------------------- constructors
+
+def cylinder(radius: float, height: float, pose: np.ndarray = IDENTITY, role: str = "") -> Primitive:
+    """Closed cylinder of ``radius`` and ``height`` (metres) along local z, centred."""
+    return Primitive(Frustum, (float(radius), float(radius), float(height), 1.0, 1.0), pose, role)
+
+
+def frustum(r_bottom: float, r_top: float, height: float, pose: np.ndarray = IDENTITY, role: str = "") -> Primitive:
+    """Closed frustum (a cone when ``r_top`` = 0) along local z, centred."""
+    return Primitive(Frustum, (float(r_bottom), float(r_top), float(height), 1.0, 1.0), pose, role)
+
+
+def ring(r_out: float, r_in: float, height: float, arc: float = FULL, pose: np.ndarray = IDENTITY,
+         role: str = "", taper: float = 0.0) -> Primitive:
+    """Hollow cylinder wall (radii at the bottom), optionally a partial arc (radians)
+    starting at +x, optionally tapered (radii grow by ``taper`` towards the top)."""
+    return Primitive(Ring, (float(r_out), float(r_in), float(height), float(arc), float(taper)), pose, role)
+
+
+def sphere(radius: float, z_lo: float | None = None, z_hi: float | None = None,
+           pose: np.ndarray = IDENTITY, role: str = "") -> Primitive:
+    """Sphere (segment): keeps ``z_lo <= z <= z_hi`` of a sphere centred at ``pose``."""
+    lo = -radius if z_lo is None else z_lo
+    hi = radius if z_hi is None else z_hi
+    return Primitive(Sphere, (float(radius), float(lo), float(hi)), pose, role)
+
+
+def torus(R: float, r: float, arc: float = FULL, pose: np.ndarray = IDENTITY, role: str = "",
+          caps: tuple[bool, bool] = (True, True)) -> Primitive:
+    """Torus (arc) about local z; centre-line radius ``R``, tube radius ``r``."""
+    return Primitive(Torus, (float(R), float(r), float(arc), float(caps[0]), float(caps[1])), pose, role)

@@ -1,0 +1,139 @@
+"""Rigid transforms as 4x4 homogeneous matrices (metres, radians).
+
+All poses in artipg are ``(4, 4)`` float64 arrays mapping points from a child frame
+into its parent frame: ``p_parent = T @ [p_child, 1]``.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+IDENTITY = np.eye(4)
+IDENTITY.flags.writeable = False
+_EYE = np.eye(4)
+
+
+def translation(x: float = 0.0, y: float = 0.0, z: float = 0.0) -> np.ndarray:
+    """Pure translation by ``(x, y, z)`` metres, as a (4, 4) matrix."""
+    T = _EYE.copy()
+    T[0, 3] = x
+    T[1, 3] = y
+    T[2, 3] = z
+    return T
+
+
+def rotation(axis, angle: float, about=None) -> np.ndarray:
+    """Rotation by ``angle`` radians about unit-length ``axis`` (3,).
+
+    Parameters
+    ----------
+    axis : array_like, shape (3,)
+        Rotation axis; normalised here.
+    angle : float
+        Right-handed angle in radians.
+    about : array_like, shape (3,), optional
+        A point on the axis (default: the origin).
+
+    Returns
+    -------
+    (4, 4) ndarray
+    """
+    x, y, z = axis
+    n = math.sqrt(x * x + y * y + z * z)
+    x, y, z = x / n, y / n, z / n
+    c, s = math.cos(angle), math.sin(angle)
+    C = 1.0 - c
+    T = np.array(
+        [
+            [c + x * x * C, x * y * C - z * s, x * z * C + y * s, 0.0],
+            [y * x * C + z * s, c + y * y * C, y * z * C - x * s, 0.0],
+            [z * x * C - y * s, z * y * C + x * s, c + z * z * C, 0.0],
+            [0.0, 0.0, 0.0, 1.0],
+        ]
+    )
+    if about is not None:
+        p = np.asarray(about, dtype=float)
+        T[:3, 3] = p - T[:3, :3] @ p
+    return T
+
+
+def rot_x(angle: float) -> np.ndarray:
+    """Rotation about +X by ``angle`` radians."""
+    return rotation((1.0, 0.0, 0.0), angle)
+
+
+def rot_y(angle: float) -> np.ndarray:
+    """Rotation about +Y by ``angle`` radians."""
+    return rotation((0.0, 1.0, 0.0), angle)
+
+
+def rot_z(angle: float) -> np.ndarray:
+    """Rotation about +Z by ``angle`` radians."""
+    return rotation((0.0, 0.0, 1.0), angle)
+
+
+def pose(xyz=(0.0, 0.0, 0.0), rot=None) -> np.ndarray:
+    """Pose with translation ``xyz`` (3,) and optional rotation ``rot`` ((3, 3) or (4, 4))."""
+    T = np.eye(4)
+    if rot is not None:
+        T[:3, :3] = np.asarray(rot, dtype=float)[:3, :3]
+    T[0, 3], T[1, 3], T[2, 3] = xyz
+    return T
+
+
+def rpy_matrix(roll: float, pitch: float, yaw: float) -> np.ndarray:
+    """URDF fixed-axis roll-pitch-yaw (X then Y then Z, extrinsic) as a (4, 4) rotation."""
+    return rot_z(yaw) @ rot_y(pitch) @ rot_x(roll)
+
+
+def matrix_to_rpy(T: np.ndarray) -> tuple[float, float, float]:
+    """Inverse of :func:`rpy_matrix` for the rotation part of ``T``."""
+    R = T[:3, :3]
+    sy = -R[2, 0]
+    sy = min(1.0, max(-1.0, sy))
+    pitch = math.asin(sy)
+    if abs(sy) < 1.0 - 1e-9:
+        roll = math.atan2(R[2, 1], R[2, 2])
+        yaw = math.atan2(R[1, 0], R[0, 0])
+    else:  # gimbal lock: put everything in yaw
+        roll = 0.0
+        yaw = math.atan2(-R[0, 1], R[1, 1])
+    return roll, pitch, yaw
+
+
+def invert(T: np.ndarray) -> np.ndarray:
+    """Inverse of a rigid transform (4, 4)."""
+    Ti = np.eye(4)
+    R = T[:3, :3]
+    Ti[:3, :3] = R.T
+    Ti[:3, 3] = -R.T @ T[:3, 3]
+    return Ti
+
+
+def apply(T: np.ndarray, points: np.ndarray) -> np.ndarray:
+    """Apply a (4, 4) transform to points (N, 3); returns (N, 3)."""
+    return points @ T[:3, :3].T + T[:3, 3]
+
+
+def apply_batched(T: np.ndarray, points: np.ndarray, vectors: np.ndarray | None = None):
+    """Apply per-point transforms.
+
+    Parameters
+    ----------
+    T : (N, 4, 4) ndarray
+        One transform per point.
+    points : (N, 3) ndarray
+    vectors : (N, 3) ndarray, optional
+        Direction vectors (e.g. normals) rotated but not translated.
+
+    Returns
+    -------
+    points : (N, 3) ndarray, and vectors : (N, 3) ndarray when given.
+    """
+    R = T[:, :3, :3]
+    p = np.einsum("nij,nj->ni", R, points) + T[:, :3, 3]
+    if vectors is None:
+        return p
+    return p, np.einsum("nij,nj->ni", R, vectors)

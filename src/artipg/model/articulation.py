@@ -1,0 +1,202 @@
+"""Links, joints and the articulated object (URDF-shaped), with forward kinematics."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from functools import cached_property
+
+import numpy as np
+
+from artipg.geometry.transforms import IDENTITY
+from artipg.model.part import Part
+
+JOINT_TYPES = ("fixed", "revolute", "prismatic", "continuous")
+
+
+@dataclass(eq=False)
+class Joint:
+    """A joint between two links.
+
+    Attributes
+    ----------
+    name : str
+    type : str
+        One of ``fixed``, ``revolute``, ``prismatic``, ``continuous``.
+    parent, child : str
+        Link names.
+    origin : (4, 4) ndarray
+        Joint frame (= child link frame at q = 0) in the parent link frame.
+    axis : (3,) ndarray
+        Unit motion axis in the joint frame.
+    limits : (float, float)
+        (lower, upper), radians or metres; ``(-inf, inf)`` for continuous joints.
+    """
+
+    name: str
+    type: str
+    parent: str
+    child: str
+    origin: np.ndarray
+    axis: np.ndarray = field(default_factory=lambda: np.array([0.0, 0.0, 1.0]))
+    limits: tuple[float, float] = (0.0, 0.0)
+
+    @property
+    def movable(self) -> bool:
+        return self.type != "fixed"
+
+    def motion(self, q: float) -> np.ndarray:
+        """Transform (4, 4) of the child relative to the joint frame at value ``q``."""
+        if self.type == "fixed" or q == 0.0:
+            return IDENTITY
+        if self.type == "prismatic":
+            T = np.eye(4)
+            T[:3, 3] = self.axis * q
+            return T
+        x, y, z = self.axis
+        c, s = math.cos(q), math.sin(q)
+        C = 1.0 - c
+        return np.array([
+            [c + x * x * C, x * y * C - z * s, x * z * C + y * s, 0.0],
+            [y * x * C + z * s, c + y * y * C, y * z * C - x * s, 0.0],
+            [z * x * C - y * s, z * y * C + x * s, c + z * z * C, 0.0],
+            [0.0, 0.0, 0.0, 1.0],
+        ])
+
+
+@dataclass(eq=False)
+class Link:
+    """A rigid group of parts; its frame is its parent joint's frame."""
+
+    name: str
+    parts: list[Part] = field(default_factory=list)
+    joint: Joint | None = None
+
+
+@dataclass(eq=False)
+class ArticulatedObject:
+    """An articulated object: links in topological order (root first) and joints.
+
+    Attributes
+    ----------
+    category, subcategory : str
+    seed : int
+    links : list of Link
+    joints : list of Joint
+        One per non-root link, in the order of ``links[1:]``.
+    params : dict
+        Recorded parameters: name -> :class:`artipg.rules.params.Param`.
+    templates : dict
+        Slot -> chosen part template name(s).
+    """
+
+    category: str
+    subcategory: str
+    seed: int
+    links: list[Link]
+    joints: list[Joint]
+    params: dict = field(default_factory=dict)
+    templates: dict = field(default_factory=dict)
+    report: dict = field(default_factory=dict)
+
+    # ------------------------------------------------------------ structure
+    @cached_property
+    def link_index(self) -> dict[str, int]:
+        return {link.name: i for i, link in enumerate(self.links)}
+
+    @cached_property
+    def parts(self) -> list[Part]:
+        """All parts, in link order; a part's instance id is its index here."""
+        return [p for link in self.links for p in link.parts]
+
+    @cached_property
+    def part_link(self) -> np.ndarray:
+        """Link index (P,) of every part."""
+        return np.array([i for i, link in enumerate(self.links) for _ in link.parts], dtype=np.int64)
+
+    @property
+    def movable_joints(self) -> list[Joint]:
+        return [j for j in self.joints if j.movable]
+
+    @property
+    def dof(self) -> int:
+        return sum(1 for j in self.joints if j.movable)
+
+    def joint(self, name: str) -> Joint:
+        for j in self.joints:
+            if j.name == name:
+                return j
+        raise KeyError(name)
+
+    # ------------------------------------------------------------ kinematics
+    def qpos_dict(self, qpos=None) -> dict[str, float]:
+        """Normalise ``qpos`` to {joint name: value}.
+
+        ``qpos`` may be None (rest pose), a dict by joint name, or a sequence with one
+        value per movable joint in :attr:`movable_joints` order.
+        """
+        if qpos is None:
+            return {}
+        if isinstance(qpos, dict):
+            return {k: float(v) for k, v in qpos.items()}
+        mv = self.movable_joints
+        q = np.asarray(qpos, dtype=float).ravel()
+        if len(q) != len(mv):
+            raise ValueError(f"qpos has {len(q)} values, object has {len(mv)} movable joints")
+        return {j.name: float(v) for j, v in zip(mv, q)}
+
+    def link_poses(self, qpos=None) -> np.ndarray:
+        """Pose (L, 4, 4) of every link in the object frame at joint state ``qpos``."""
+        q = self.qpos_dict(qpos)
+        idx = self.link_index
+        T = np.empty((len(self.links), 4, 4))
+        T[0] = IDENTITY
+        for i, link in enumerate(self.links[1:], start=1):
+            j = link.joint
+            Tj = T[idx[j.parent]] @ j.origin
+            v = q.get(j.name, 0.0)
+            T[i] = Tj @ j.motion(v) if v else Tj
+        return T
+
+    def part_poses(self, qpos=None) -> np.ndarray:
+        """Pose (P, 4, 4) of every part frame in the object frame."""
+        L = self.link_poses(qpos)
+        return L[self.part_link] @ np.stack([p.pose for p in self.parts])
+
+    def limits(self) -> np.ndarray:
+        """(J, 2) lower/upper limits of the movable joints (continuous: -π..π)."""
+        out = []
+        for j in self.movable_joints:
+            lo, hi = j.limits
+            out.append((-math.pi, math.pi) if j.type == "continuous" else (lo, hi))
+        return np.array(out, dtype=float).reshape(-1, 2)
+
+    # ------------------------------------------------------------ geometry
+    @cached_property
+    def primitive_table(self):
+        """Primitives grouped by geometry template (see :mod:`artipg.annotate.points`)."""
+        from artipg.annotate.points import PrimitiveTable
+
+        return PrimitiveTable.of(self)
+
+    def bounds(self, qpos=None) -> np.ndarray:
+        """Exact axis-aligned bounding box (2, 3) of the object at ``qpos``."""
+        return self.primitive_table.bounds(self.link_poses(qpos))
+
+    def sample_points(self, n: int = 2048, seed: int = 0, qpos=None):
+        """Area-uniform labelled surface points; see :func:`artipg.annotate.points.sample_points`."""
+        from artipg.annotate.points import sample_points
+
+        return sample_points(self, n, seed=seed, qpos=qpos)
+
+    def to_trimesh(self, qpos=None, sections: int = 32):
+        """The whole object at ``qpos`` as one ``trimesh.Trimesh`` (object frame)."""
+        import trimesh
+
+        L = self.link_poses(qpos)
+        meshes = []
+        for li, link in enumerate(self.links):
+            for part in link.parts:
+                for prim in part.primitives:
+                    meshes.append(prim.placed(L[li] @ part.pose).mesh(sections))
+        return trimesh.util.concatenate(meshes)

@@ -1,0 +1,107 @@
+"""Assembly API: create links, place parts, set joints (after ManiSkill's builder)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from artipg.geometry.transforms import IDENTITY, translation
+from artipg.model.articulation import JOINT_TYPES, ArticulatedObject, Joint, Link
+from artipg.model.part import Part
+
+
+class LinkBuilder:
+    """A link under construction. Obtain one from :meth:`ObjectBuilder.create_link`."""
+
+    def __init__(self, owner: "ObjectBuilder", name: str, parent: "LinkBuilder | None"):
+        self._owner = owner
+        self.name = name
+        self.parent = parent
+        self.link = Link(name)
+
+    def add(self, part: Part, pose: np.ndarray = IDENTITY, name: str | None = None) -> Part:
+        """Place ``part`` at ``pose`` (part frame in this link's frame); returns it."""
+        part.pose = pose
+        part.name = self._owner._unique(name or part.semantic)
+        self.link.parts.append(part)
+        return part
+
+    def set_joint(self, type: str, origin: np.ndarray, axis=(0.0, 0.0, 1.0),
+                  limits: tuple[float, float] = (0.0, 0.0), name: str | None = None) -> Joint:
+        """Connect this link to its parent.
+
+        Parameters
+        ----------
+        type : {"fixed", "revolute", "prismatic", "continuous"}
+        origin : (4, 4) ndarray
+            Joint frame in the parent link frame; this link's frame coincides with it
+            at q = 0.
+        axis : (3,) array_like
+            Motion axis in the joint frame (normalised here).
+        limits : (lower, upper)
+            Radians or metres, lower < upper for revolute/prismatic joints.
+        """
+        if self.parent is None:
+            raise ValueError("the root link has no joint")
+        if type not in JOINT_TYPES:
+            raise ValueError(f"joint type must be one of {JOINT_TYPES}, got {type!r}")
+        a = np.asarray(axis, dtype=float)
+        a = a / np.linalg.norm(a)
+        lo, hi = float(limits[0]), float(limits[1])
+        if type == "continuous":
+            lo, hi = -np.inf, np.inf
+        elif type != "fixed" and not lo < hi:
+            raise ValueError(f"joint {self.name}: limits must satisfy lower < upper, got {limits}")
+        j = Joint(name or f"joint_{self.name}", type, self.parent.name, self.name, origin, a, (lo, hi))
+        self.link.joint = j
+        return j
+
+
+class ObjectBuilder:
+    """Collects links and joints and builds an :class:`ArticulatedObject`."""
+
+    def __init__(self):
+        self._links: list[LinkBuilder] = []
+        self._names: dict[str, int] = {}
+
+    def _unique(self, base: str) -> str:
+        k = self._names.get(base, 0)
+        self._names[base] = k + 1
+        return f"{base}_{k}"
+
+    def create_link(self, name: str, parent: LinkBuilder | None = None) -> LinkBuilder:
+        """A new link named ``name`` (made unique), child of ``parent`` (None: the root)."""
+        if parent is None and self._links:
+            raise ValueError("the object already has a root link; pass a parent")
+        lb = LinkBuilder(self, self._unique(name), parent)
+        self._links.append(lb)
+        return lb
+
+    @property
+    def root(self) -> LinkBuilder:
+        return self._links[0]
+
+    def build(self, category: str, subcategory: str, seed: int, params=None, templates=None,
+              normalize: bool = True) -> ArticulatedObject:
+        """Freeze into an :class:`ArticulatedObject`.
+
+        With ``normalize`` the object is translated so that at rest it stands on z = 0
+        with its bounding box centred on the z axis (DESIGN.md section 1).
+        """
+        for lb in self._links[1:]:
+            if lb.link.joint is None:
+                raise ValueError(f"link {lb.name} has no joint; call set_joint")
+        links = [lb.link for lb in self._links]
+        obj = ArticulatedObject(category, subcategory, seed, links, [lk.joint for lk in links[1:]],
+                                params or {}, templates or {})
+        if normalize:
+            b = obj.bounds()
+            c = (b[0] + b[1]) / 2.0
+            S = translation(-c[0], -c[1], -b[0, 2])
+            root = links[0]
+            for part in root.parts:
+                part.pose = S @ part.pose
+            for j in obj.joints:
+                if j.parent == root.name:
+                    j.origin = S @ j.origin
+            obj.primitive_table.shift_root(S)
+        return obj

@@ -1,0 +1,106 @@
+"""Parts: the instances of part templates, with their analytic knowledge."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from artipg.geometry.base import Primitive
+from artipg.geometry.transforms import IDENTITY
+from artipg.vocabulary import ACTIONABLE_ID, AFFORDANCES, label_id
+
+
+@dataclass(frozen=True)
+class Region:
+    """An analytic surface region of a part (affordance knowledge).
+
+    A surface point of the part belongs to the region when it lies on a primitive whose
+    role is in ``roles`` (any primitive when ``roles`` is empty) and, if ``box`` is
+    given, inside that axis-aligned box (2, 3) of the part frame.
+    """
+
+    roles: tuple[str, ...] = ()
+    box: np.ndarray | None = None
+
+
+@dataclass(frozen=True)
+class Grasp:
+    """A parallel-jaw grasp in the part frame.
+
+    ``pose`` (4, 4): gripper frame with +z the approach direction (towards the part) and
+    +y the jaw-closing axis, origin between the finger tips. ``width`` is the opening in
+    metres. ``open_dir`` (3,) is the direction that opens the part, or zeros.
+    """
+
+    pose: np.ndarray
+    width: float
+    open_dir: np.ndarray = field(default_factory=lambda: np.zeros(3))
+
+
+@dataclass(eq=False)
+class Part:
+    """One part instance: primitives in its own frame plus knowledge.
+
+    Attributes
+    ----------
+    semantic : str
+        Label from :data:`artipg.vocabulary.SEMANTIC_LABELS`.
+    template : str
+        Name of the part template that built it.
+    primitives : list of Primitive
+        Geometry in the part frame (metres).
+    anchors : dict
+        Named points (3,) in the part frame (attachment points for children).
+    regions : dict
+        Affordance name -> :class:`Region`.
+    canonical : (4, 4) ndarray
+        Canonical frame of the part (for part pose and NPCS), in the part frame.
+    size : (3,) ndarray or None
+        Extents along the canonical axes; derived from the primitives when None.
+    grasps : list of Grasp
+        Grasp poses defined on the template.
+    actionable : str
+        GAPartNet actionable class or ``"none"``.
+    name : str
+        Instance name, unique in the object (set when added to a link).
+    pose : (4, 4) ndarray
+        Part frame in its link frame (set when added to a link).
+    """
+
+    semantic: str
+    template: str
+    primitives: list[Primitive]
+    anchors: dict = field(default_factory=dict)
+    regions: dict = field(default_factory=dict)
+    canonical: np.ndarray = field(default_factory=lambda: IDENTITY)
+    size: np.ndarray | None = None
+    grasps: list = field(default_factory=list)
+    actionable: str = "none"
+    name: str = ""
+    pose: np.ndarray = field(default_factory=lambda: IDENTITY)
+
+    def __post_init__(self):
+        label_id(self.semantic)
+        if self.actionable not in ACTIONABLE_ID:
+            raise ValueError(f"unknown actionable class {self.actionable!r}")
+        for k in self.regions:
+            if k not in AFFORDANCES:
+                raise ValueError(f"unknown affordance {k!r}; choose from {AFFORDANCES}")
+
+    def bounds(self) -> np.ndarray:
+        """Bounding box (2, 3) of the part in its own frame."""
+        b = np.stack([p.bounds() for p in self.primitives])
+        return np.stack([b[:, 0].min(axis=0), b[:, 1].max(axis=0)])
+
+    def canonical_size(self) -> np.ndarray:
+        """Extents (3,) of the part along its canonical axes."""
+        if self.size is not None:
+            return np.asarray(self.size, dtype=float)
+        Ci = np.linalg.inv(self.canonical)
+        b = np.stack([p.placed(Ci).bounds() for p in self.primitives])
+        return b[:, 1].max(axis=0) - b[:, 0].min(axis=0)
+
+    def anchor(self, name: str) -> np.ndarray:
+        """Anchor ``name`` (3,) in the part frame."""
+        return np.asarray(self.anchors[name], dtype=float)

@@ -1,0 +1,160 @@
+"""The parameter recorder: every random parameter of an object is drawn here.
+
+Each draw records its name, value and the valid range computed *at that moment* from
+the parents, so an object's structural parameters can be exported and a repair step
+can regenerate it with ``overrides`` (clamped to the then-valid range). The random
+number is always drawn, even when overridden, so overriding one parameter never
+shifts the stream of the others.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+
+@dataclass
+class Param:
+    """A recorded parameter: ``kind`` is uniform, integer, choice, flag or fixed."""
+
+    name: str
+    kind: str
+    value: Any
+    lo: Any = None
+    hi: Any = None
+    options: tuple = ()
+
+    def to_json(self) -> dict:
+        d = {"kind": self.kind, "value": self.value}
+        if self.kind in ("uniform", "integer"):
+            d["range"] = [self.lo, self.hi]
+        if self.options:
+            d["options"] = list(self.options)
+        return d
+
+
+def option_name(opt) -> str:
+    """Display name of a choice option: a template's ``__name__`` or ``str``."""
+    return getattr(opt, "__name__", None) or str(opt)
+
+
+_OPTION_CACHE: dict[int, tuple] = {}
+
+
+def _options(options):
+    """(options, weights, names, total weight) of a choice, cached per options object."""
+    hit = _OPTION_CACHE.get(id(options))
+    if hit is not None and hit[0] is options:
+        return hit[1]
+    if isinstance(options, dict):
+        opts, w = list(options), [float(v) for v in options.values()]
+    else:
+        opts = list(options)
+        w = [1.0] * len(opts)
+    out = (opts, w, tuple(option_name(o) for o in opts), sum(w))
+    if len(_OPTION_CACHE) < 4096:  # keyed by id: keep the object alive with its entry
+        _OPTION_CACHE[id(options)] = (options, out)
+    return out
+
+
+class ParamRecorder:
+    """Draws named parameters from one ``Generator`` and records them.
+
+    Parameters
+    ----------
+    rng : numpy.random.Generator
+        The only source of randomness.
+    record : dict, optional
+        Shared name -> :class:`Param` store.
+    overrides : dict, optional
+        name -> value; clamped to the valid range at draw time.
+    prefix : str
+        Prepended (with a dot) to every name.
+    """
+
+    __slots__ = ("rng", "record", "overrides", "prefix")
+
+    def __init__(self, rng: np.random.Generator, record: dict | None = None,
+                 overrides: dict | None = None, prefix: str = ""):
+        self.rng = rng
+        self.record = {} if record is None else record
+        self.overrides = overrides or {}
+        self.prefix = prefix
+
+    def scope(self, name: str) -> "ParamRecorder":
+        """A recorder sharing stream and record, whose names are prefixed by ``name``."""
+        return ParamRecorder(self.rng, self.record, self.overrides, self._key(name))
+
+    def _key(self, name: str) -> str:
+        return f"{self.prefix}.{name}" if self.prefix else name
+
+    def uniform(self, name: str, lo: float, hi: float, fixed: float | None = None) -> float:
+        """Uniform value in [lo, hi]; ``fixed`` (set by a parent) is recorded instead."""
+        key = self._key(name)
+        if fixed is not None:
+            v = float(fixed)
+            self.record[key] = Param(key, "fixed", v)
+            return v
+        lo, hi = float(lo), float(hi)
+        if hi < lo:
+            raise ValueError(f"parameter {key}: empty range [{lo}, {hi}]")
+        v = lo + (hi - lo) * self.rng.random()
+        o = self.overrides.get(key)
+        if o is not None:
+            v = min(hi, max(lo, float(o)))
+        self.record[key] = Param(key, "uniform", v, lo, hi)
+        return v
+
+    def integers(self, name: str, lo: int, hi: int, fixed: int | None = None) -> int:
+        """Uniform integer in [lo, hi] (both inclusive)."""
+        key = self._key(name)
+        if fixed is not None:
+            self.record[key] = Param(key, "fixed", int(fixed))
+            return int(fixed)
+        lo, hi = int(lo), int(hi)
+        if hi < lo:
+            raise ValueError(f"parameter {key}: empty range [{lo}, {hi}]")
+        v = lo + int(self.rng.random() * (hi - lo + 1))
+        o = self.overrides.get(key)
+        if o is not None:
+            v = min(hi, max(lo, int(round(o))))
+        self.record[key] = Param(key, "integer", v, lo, hi)
+        return v
+
+    def choice(self, name: str, options, fixed=None):
+        """Weighted choice.
+
+        ``options`` is a dict {option: weight} or a sequence (equal weights). Options
+        may be strings or functions (part templates); an override names the option.
+        """
+        key = self._key(name)
+        opts, w, names, total = _options(options)
+        if fixed is not None:
+            self.record[key] = Param(key, "fixed", option_name(fixed))
+            return fixed
+        u = self.rng.random() * total
+        i = 0
+        acc = w[0]
+        while u >= acc and i < len(w) - 1:
+            i += 1
+            acc += w[i]
+        o = self.overrides.get(key)
+        if o is not None and option_name(o) in names:
+            i = names.index(option_name(o))
+        self.record[key] = Param(key, "choice", names[i], options=names)
+        return opts[i]
+
+    def flag(self, name: str, p: float, fixed: bool | None = None) -> bool:
+        """True with probability ``p``."""
+        key = self._key(name)
+        if fixed is not None:
+            self.record[key] = Param(key, "fixed", bool(fixed))
+            return bool(fixed)
+        v = self.rng.random() < p
+        o = self.overrides.get(key)
+        if o is not None:
+            v = bool(o)
+        self.record[key] = Param(key, "flag", bool(v), options=(False, True))
+        return bool(v)
