@@ -4,12 +4,15 @@ from __future__ import annotations
 
 __version__ = "0.1.0"
 
+# Import the registry package *before* defining the function of the same name: the
+# import binds the attribute ``artipg.categories`` to the sub-package once, and the
+# definition below then replaces it with the public function for good.
+from artipg.categories import REGISTRY as _REGISTRY  # noqa: E402
+
 
 def categories() -> list[str]:
     """Names of all registered categories, sorted."""
-    from artipg.categories import REGISTRY
-
-    return sorted(REGISTRY)
+    return sorted(_REGISTRY)
 
 
 def get_category(name: str):
@@ -20,12 +23,10 @@ def get_category(name: str):
     KeyError
         With the list of valid names when ``name`` is unknown.
     """
-    from artipg.categories import REGISTRY
-
     try:
-        return REGISTRY[name]
+        return _REGISTRY[name]
     except KeyError:
-        raise KeyError(f"unknown category {name!r}; valid: {', '.join(sorted(REGISTRY))}") from None
+        raise KeyError(f"unknown category {name!r}; valid: {', '.join(sorted(_REGISTRY))}") from None
 
 
 def generate(category: str, seed: int = 0, overrides: dict | None = None):

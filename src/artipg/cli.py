@@ -22,13 +22,32 @@ for _name in COMMAND_MODULES:
     importlib.import_module(_name).register(app)
 
 
+def _is_cli_error(e: BaseException) -> bool:
+    """True for click / typer usage errors (typer may vendor its own click)."""
+    return hasattr(e, "format_message") and hasattr(e, "exit_code")
+
+
 def main() -> None:
     """Console entry point: run the app, turning user errors into one-line messages."""
     try:
-        app()
-    except KeyboardInterrupt:
+        code = app(standalone_mode=False)
+    except (KeyboardInterrupt, typer.Abort):
         print("interrupted; re-run the same command to resume", file=sys.stderr)
         raise SystemExit(130)
+    except typer.Exit as e:
+        raise SystemExit(e.exit_code)
+    except Exception as e:
+        if not _is_cli_error(e):
+            raise
+        ctx = getattr(e, "ctx", None)
+        if type(e).__name__ == "NoArgsIsHelpError" and ctx is not None:
+            print(ctx.get_help())
+            raise SystemExit(0)
+        # bad option values, missing arguments: one line, no box, no traceback
+        hint = f" (see '{ctx.command_path} --help')" if ctx is not None else ""
+        print(f"error: {e.format_message()}{hint}", file=sys.stderr)
+        raise SystemExit(e.exit_code or 2)
+    raise SystemExit(code if isinstance(code, int) else 0)
 
 
 if __name__ == "__main__":

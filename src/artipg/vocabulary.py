@@ -44,6 +44,7 @@ SEMANTIC_LABELS: tuple[str, ...] = (
     "flap",
     "sash",        # window sash
     "nozzle",
+    "lens",        # eyeglass lens
 )
 
 LABEL_ID: dict[str, int] = {name: i for i, name in enumerate(SEMANTIC_LABELS)}

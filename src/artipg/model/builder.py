@@ -22,6 +22,7 @@ class LinkBuilder:
         """Place ``part`` at ``pose`` (part frame in this link's frame); returns it."""
         part.pose = pose
         part.name = self._owner._unique(name or part.semantic)
+        part.param_span = self._owner._param_span()
         self.link.parts.append(part)
         return part
 
@@ -57,11 +58,28 @@ class LinkBuilder:
 
 
 class ObjectBuilder:
-    """Collects links and joints and builds an :class:`ArticulatedObject`."""
+    """Collects links and joints and builds an :class:`ArticulatedObject`.
 
-    def __init__(self):
+    Parameters
+    ----------
+    record : dict, optional
+        The parameter record the category draws into (insertion ordered). When given,
+        each added part remembers which record entries were drawn to build it
+        (:attr:`artipg.model.part.Part.param_span`).
+    """
+
+    def __init__(self, record: dict | None = None):
         self._links: list[LinkBuilder] = []
         self._names: dict[str, int] = {}
+        self._record = record
+        self._mark = 0
+
+    def _param_span(self) -> tuple[int, int]:
+        """Record positions drawn since the previous part was added."""
+        if self._record is None:
+            return (0, 0)
+        start, self._mark = self._mark, len(self._record)
+        return (start, self._mark)
 
     def _unique(self, base: str) -> str:
         k = self._names.get(base, 0)

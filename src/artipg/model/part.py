@@ -66,6 +66,11 @@ class Part:
         Instance name, unique in the object (set when added to a link).
     pose : (4, 4) ndarray
         Part frame in its link frame (set when added to a link).
+    param_span : (int, int)
+        ``(start, stop)`` positions in the object's parameter record of the
+        parameters first drawn after the previous part was added and up to this one
+        (set when added to a link): the draws that built this part, which is what
+        repair perturbs when the part is at fault (see :mod:`artipg.validate.repair`).
     """
 
     semantic: str
@@ -79,6 +84,7 @@ class Part:
     actionable: str = "none"
     name: str = ""
     pose: np.ndarray = field(default_factory=lambda: IDENTITY)
+    param_span: tuple = (0, 0)
 
     def __post_init__(self):
         label_id(self.semantic)

@@ -107,7 +107,7 @@ class Category:
         templates: dict = {}
         top = ParamRecorder(np.random.default_rng([seed, 0]), record, overrides)
         sub = top.choice("subcategory", self.subcategories)
-        builder = ObjectBuilder()
+        builder = ObjectBuilder(record)
         out: dict = {}
         for slot in self.order:
             rng = np.random.default_rng([seed, zlib.crc32(slot.name.encode())])

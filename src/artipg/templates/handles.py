@@ -116,7 +116,8 @@ def edge_pull(p, length: float | None = None) -> Part:
     prims = [cuboid(reach, t, L, translation(-reach / 2, 0, 0), role="mount"),
              cuboid(t, lip, L, translation(-reach + t / 2, -lip / 2 + t / 2, 0), role="grip")]
     return Part("handle", "edge_pull", prims, regions={"grasp": Region(("grip",)), "pull": Region(("grip",))},
-                grasps=_grasps_along_z(-reach + t / 2, -L / 3, L / 3, lip + 0.02), actionable="line_fixed_handle")
+                grasps=[front_grasp(-reach + t / 2, t / 2 - lip / 2, L * k / 3, lip + 0.02) for k in (-1, 0, 1)],
+                actionable="line_fixed_handle")
 
 
 #: Front handles, interchangeable (weights used by categories that do not override).

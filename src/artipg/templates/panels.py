@@ -13,7 +13,7 @@ import numpy as np
 
 from artipg.geometry import cuboid, cuboid_between, rect_ring
 from artipg.geometry.transforms import rot_y, translation
-from artipg.model.part import Part, Region
+from artipg.model.part import Grasp, Part, Region
 
 _FRAME_TO_X = rot_y(np.pi / 2)  # rect ring's z (thickness) -> x
 
@@ -21,6 +21,40 @@ _FRAME_TO_X = rot_y(np.pi / 2)  # rect ring's z (thickness) -> x
 def _front_anchors(t: float, w: float, h: float) -> dict:
     return {"edge_+y": (-t, w / 2, 0.0), "edge_-y": (-t, -w / 2, 0.0), "edge_+z": (-t, 0.0, h / 2),
             "edge_-z": (-t, 0.0, -h / 2), "front": (-t, 0.0, 0.0)}
+
+
+def _edge_frame(out_y: float, out_z: float) -> np.ndarray:
+    z_g = np.array([0.0, -out_y, -out_z])  # approach: against the edge's outward normal
+    y_g = np.array([1.0, 0.0, 0.0])        # jaws close across the panel's thickness
+    T = np.eye(4)
+    T[:3, 0], T[:3, 1], T[:3, 2] = np.cross(y_g, z_g), y_g, z_g
+    return T
+
+
+# gripper frames for the four edges, built once (templates must stay cheap)
+_EDGE_FRAMES = {(sy, sz): _edge_frame(sy, sz) for sy, sz in ((1.0, 0.0), (-1.0, 0.0), (0.0, 1.0), (0.0, -1.0))}
+_NO_DIR = np.zeros(3)
+_NO_DIR.flags.writeable = False
+
+
+def edge_grasp(t: float, y: float, z: float, out_y: float, out_z: float, inset: float = 0.01) -> Grasp:
+    """A pinch grasp across a panel's thickness at its edge point (y, z).
+
+    (out_y, out_z) is the edge's outward unit normal in the y-z plane (one of
+    (±1, 0), (0, ±1)); the gripper approaches against it, its jaws close along x over
+    the ``t``-thick panel, and the grip centre lies ``inset`` inside the edge.
+    ``open_dir`` is left to the joint.
+    """
+    T = _EDGE_FRAMES[(out_y, out_z)].copy()
+    T[0, 3], T[1, 3], T[2, 3] = -t / 2, y - out_y * inset, z - out_z * inset
+    return Grasp(T, t + 0.02, _NO_DIR)
+
+
+def door_edge_grasps(t: float, w: float, h: float) -> list[Grasp]:
+    """Pinch grasps at the mid-points of the four edges of a front panel; the
+    annotation drops the one on the hinge edge, which cannot open it."""
+    return [edge_grasp(t, w / 2, 0.0, 1.0, 0.0), edge_grasp(t, -w / 2, 0.0, -1.0, 0.0),
+            edge_grasp(t, 0.0, h / 2, 0.0, 1.0), edge_grasp(t, 0.0, -h / 2, 0.0, -1.0)]
 
 
 def _front_regions(t, w, h, edge=0.25):
@@ -34,7 +68,7 @@ def slab_door(p, width: float, height: float, thickness: float | None = None) ->
     t = p.uniform("thickness", 0.012, 0.025, fixed=thickness)
     part = Part("door", "slab_door", [cuboid(t, width, height, translation(-t / 2, 0, 0), role="panel")],
                 anchors=_front_anchors(t, width, height), regions=_front_regions(t, width, height),
-                actionable="hinge_door")
+                grasps=door_edge_grasps(t, width, height), actionable="hinge_door")
     return part
 
 
@@ -48,7 +82,8 @@ def framed_door(p, width: float, height: float, thickness: float | None = None) 
                       translation(-t / 2, 0, 0) @ _FRAME_TO_X, role="panel")
     inner = cuboid(panel_t, width - 2 * rail, height - 2 * rail, translation(-panel_t / 2, 0, 0), role="inset")
     return Part("door", "framed_door", [frame, inner], anchors=_front_anchors(t, width, height),
-                regions=_front_regions(t, width, height), actionable="hinge_door")
+                regions=_front_regions(t, width, height), grasps=door_edge_grasps(t, width, height),
+                actionable="hinge_door")
 
 
 def glass_door(p, width: float, height: float, thickness: float | None = None) -> Part:
@@ -60,7 +95,8 @@ def glass_door(p, width: float, height: float, thickness: float | None = None) -
                       translation(-t / 2, 0, 0) @ _FRAME_TO_X, role="panel")
     pane = cuboid(glass_t, width - 2 * rail, height - 2 * rail, translation(-t / 2, 0, 0), role="glass")
     return Part("door", "glass_door", [frame, pane], anchors=_front_anchors(t, width, height),
-                regions=_front_regions(t, width, height), actionable="hinge_door")
+                regions=_front_regions(t, width, height), grasps=door_edge_grasps(t, width, height),
+                actionable="hinge_door")
 
 
 DOORS = {slab_door: 3.0, framed_door: 2.0, glass_door: 1.0}
@@ -92,7 +128,9 @@ def box_drawer(p, width: float, height: float, depth: float, opening=None, thick
     prims += _drawer_box(wall, depth, opening or _default_opening(width, height), frac)
     front = np.array([[-t - 1e-4, -width / 2, -height / 2], [-t + 1e-4, width / 2, height / 2]])
     return Part("drawer", "box_drawer", prims, anchors=_front_anchors(t, width, height),
-                regions={"push": Region(("panel",), front)}, actionable="slider_drawer")
+                regions={"push": Region(("panel",), front)},
+                grasps=[edge_grasp(t, 0.0, height / 2, 0.0, 1.0)],
+                actionable="slider_drawer")
 
 
 def slot_drawer(p, width: float, height: float, depth: float, opening=None, thickness: float | None = None) -> Part:
@@ -115,6 +153,7 @@ def slot_drawer(p, width: float, height: float, depth: float, opening=None, thic
     return Part("drawer", "slot_drawer", prims, anchors=_front_anchors(t, width, height),
                 regions={"push": Region(("panel",), front), "pull": Region(("panel",), grip),
                          "grasp": Region(("panel",), grip)},
+                grasps=[edge_grasp(t, 0.0, h2 - slot, 0.0, 1.0)],
                 actionable="slider_drawer")
 
 

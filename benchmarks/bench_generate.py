@@ -1,0 +1,75 @@
+"""Generation speed per category.
+
+Prints, per category, the median milliseconds per object for
+(a) ``artipg.generate``, (b) generate + 2048 labelled points, (c) a full export to
+disk (URDF, meshes, semantics, annotation, points), and the objects/second of
+``artipg generate -n N --workers 2`` end to end (CLI, process pool, disk).
+
+Usage: python benchmarks/bench_generate.py [--categories a b] [--seeds 200] [--cli-n 500]
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+
+import numpy as np
+
+import artipg
+from artipg.export.folder import export_object
+
+
+def _median_ms(fn, seeds) -> float:
+    times = []
+    for s in seeds:
+        t0 = time.perf_counter()
+        fn(s)
+        times.append(time.perf_counter() - t0)
+    return 1e3 * float(np.median(times))
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--categories", nargs="*", default=None)
+    ap.add_argument("--seeds", type=int, default=200, help="seeds per category for (a) and (b)")
+    ap.add_argument("--export-seeds", type=int, default=20, help="seeds per category for (c)")
+    ap.add_argument("--cli-n", type=int, default=500, help="objects for the CLI run (0: skip)")
+    ap.add_argument("--cli-category", default="storage_furniture")
+    args = ap.parse_args()
+    cats = args.categories or artipg.categories()
+    seeds = range(args.seeds)
+    tmp = tempfile.mkdtemp(prefix="artipg-bench-")
+    print(f"artipg {artipg.__version__}, {len(cats)} categories, medians over {args.seeds} seeds "
+          f"({args.export_seeds} for export), one process")
+    print(f"{'category':<20}{'(a) gen ms':>12}{'(b) +2048 pts ms':>18}{'(c) export ms':>15}{'joints':>8}")
+    worst_b = 0.0
+    for c in cats:
+        for s in range(5):  # warm caches and imports
+            artipg.generate(c, s).sample_points(2048)
+        a = _median_ms(lambda s: artipg.generate(c, s), seeds)
+        b = _median_ms(lambda s: artipg.generate(c, s).sample_points(2048), seeds)
+        e = _median_ms(lambda s: export_object(artipg.generate(c, s), os.path.join(tmp, c, str(s)), overwrite=True),
+                       range(args.export_seeds))
+        joints = np.mean([artipg.generate(c, s).dof for s in range(50)])
+        worst_b = max(worst_b, b)
+        print(f"{c:<20}{a:>12.3f}{b:>18.3f}{e:>15.1f}{joints:>8.1f}")
+    print(f"worst median (b): {worst_b:.3f} ms per object")
+    if args.cli_n:
+        out = os.path.join(tmp, "cli")
+        cmd = [sys.executable, "-m", "artipg.cli", "generate", args.cli_category, "-n", str(args.cli_n),
+               "--out", out, "--workers", "2", "--quiet"]
+        t0 = time.perf_counter()
+        subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
+        dt = time.perf_counter() - t0
+        print(f"CLI: artipg generate {args.cli_category} -n {args.cli_n} --workers 2: {dt:.1f} s, "
+              f"{args.cli_n / dt:.1f} objects/s (process start-up included)")
+    shutil.rmtree(tmp, ignore_errors=True)
+
+
+if __name__ == "__main__":
+    main()

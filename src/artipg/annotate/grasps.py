@@ -1,0 +1,272 @@
+"""Parallel-jaw grasp poses at any joint state, checked against a two-finger gripper.
+
+Grasps are defined on the part templates (:class:`artipg.model.part.Grasp`, part
+frame) and mapped to the object frame with the part's pose at ``qpos``. Each one gets
+
+- a collision check of a simple gripper model (two finger boxes and a palm box, see
+  :class:`Gripper`) against the exact SDFs of all the object's primitives, the
+  grasped part included;
+- the direction that opens the part: for a revolute (or continuous) joint the tangent
+  of the grasp point's circle about the joint axis, for a prismatic joint the joint
+  axis, both pointing towards increasing joint value when the joint opens that way
+  (the side of 0 with the larger range); the part's joint is the nearest movable
+  joint at or above its link. Parts on the root link use the template's ``open_dir``.
+
+Gripper frame (as on the templates): +z is the approach direction (towards the part),
++y the axis along which the jaws close, origin between the finger tips' centre line
+at the middle of the grip.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from artipg.annotate.sdf import object_sdf
+
+
+@dataclass(frozen=True)
+class Gripper:
+    """A two-finger parallel gripper made of three boxes (metres, gripper frame).
+
+    Fingers are ``finger_thickness`` thick along y with their inner faces at
+    ``y = ±width / 2``, ``finger_width`` wide along x and ``finger_length`` long along
+    z, reaching ``tip_depth`` beyond the origin; the palm closes them off behind.
+    Defaults are close to a Franka Panda hand.
+    """
+
+    finger_length: float = 0.045
+    finger_width: float = 0.018
+    finger_thickness: float = 0.01
+    tip_depth: float = 0.008
+    palm_thickness: float = 0.02
+    palm_width: float = 0.06
+
+    def boxes(self, width: float) -> np.ndarray:
+        """The three boxes (3, 2, 3) as (lo, hi) corners in the gripper frame."""
+        w, t = width / 2, self.finger_thickness
+        z0, z1 = self.tip_depth - self.finger_length, self.tip_depth
+        fx = self.finger_width / 2
+        py = max(w + t, self.palm_width / 2)
+        return np.array([
+            [[-fx, w, z0], [fx, w + t, z1]],
+            [[-fx, -w - t, z0], [fx, -w, z1]],
+            [[-fx, -py, z0 - self.palm_thickness], [fx, py, z0]],
+        ])
+
+    def closing_box(self, width: float) -> np.ndarray:
+        """The volume swept by the closing fingers (2, 3), gripper frame."""
+        return np.array([[-self.finger_width / 2, -width / 2, self.tip_depth - self.finger_length],
+                         [self.finger_width / 2, width / 2, self.tip_depth]])
+
+
+DEFAULT_GRIPPER = Gripper()
+
+
+def box_surface_grid(boxes: np.ndarray, spacing: float) -> tuple[np.ndarray, np.ndarray]:
+    """Regular grid points (K, 3) on the faces of boxes (B, 2, 3), at most ``spacing``
+    apart along each edge direction, and the box index (K,) of each point.
+
+    Every point of a face is within ``spacing * sqrt(2) / 2`` of a grid point.
+    """
+    pts, idx = [], []
+    for b, (lo, hi) in enumerate(boxes):
+        n = np.maximum(2, np.ceil((hi - lo) / spacing).astype(int) + 1)
+        ijk = np.stack(np.meshgrid(*[np.arange(k) for k in n], indexing="ij"), axis=-1).reshape(-1, 3)
+        on_face = np.any((ijk == 0) | (ijk == n - 1), axis=1)
+        g = lo + ijk[on_face] / (n - 1) * (hi - lo)
+        pts.append(g)
+        idx.append(np.full(len(g), b))
+    return np.concatenate(pts), np.concatenate(idx)
+
+
+@dataclass
+class WorldGrasps:
+    """Grasps of an object at one joint state (object frame, metres).
+
+    Attributes
+    ----------
+    pose : (G, 4, 4) float64
+        Gripper frames (+z approach, +y jaw axis, origin at the grip centre).
+    width : (G,) float64
+        Jaw opening.
+    approach : (G, 3) float64
+        Approach direction (``pose[:, :3, 2]``).
+    open_dir : (G, 3) float64
+        Unit direction in which moving the grasp point opens the part (zeros when
+        unknown).
+    part : (G,) int64
+        Instance id of the grasped part.
+    joint : (G,) int64
+        Index into ``obj.joints`` of the joint that moves the part, -1 if none.
+    lever : (G,) float64
+        Distance of the grasp point from a revolute joint's axis (0 otherwise).
+    collision_free : (G,) bool
+        Whether the gripper model at that pose clears the whole object.
+    clearance : (G,) float64
+        Smallest signed distance from the gripper's sample grid to the object.
+    """
+
+    pose: np.ndarray
+    width: np.ndarray
+    approach: np.ndarray
+    open_dir: np.ndarray
+    part: np.ndarray
+    joint: np.ndarray
+    lever: np.ndarray
+    collision_free: np.ndarray
+    clearance: np.ndarray
+
+    def __len__(self) -> int:
+        return len(self.width)
+
+    def subset(self, m) -> "WorldGrasps":
+        """The grasps selected by the mask or index array ``m``."""
+        return WorldGrasps(*(getattr(self, f)[m] for f in self.__dataclass_fields__))
+
+
+def part_joint(obj) -> np.ndarray:
+    """Index into ``obj.joints`` of the nearest movable joint at or above each part's
+    link (-1 for parts that only move with the root)."""
+    links = obj.links
+    idx = obj.link_index
+    jindex = {j.name: i for i, j in enumerate(obj.joints)}
+    link_joint = np.full(len(links), -1, dtype=np.int64)
+    for li, link in enumerate(links[1:], start=1):  # topological order: parent first
+        j = link.joint
+        link_joint[li] = jindex[j.name] if j.movable else link_joint[idx[j.parent]]
+    return link_joint[obj.part_link]
+
+
+def _opening_sign(joint) -> float:
+    lo, hi = joint.limits
+    if not np.isfinite(lo) or not np.isfinite(hi):
+        return 1.0
+    return 1.0 if hi >= -lo else -1.0
+
+
+def world_grasps(obj, qpos=None, check: bool = True, gripper: Gripper = DEFAULT_GRIPPER, spacing: float = 0.003,
+                 min_lever: float = 0.25) -> WorldGrasps:
+    """All template grasps of ``obj`` in the object frame at ``qpos``.
+
+    Parameters
+    ----------
+    obj : ArticulatedObject
+    qpos : None, dict or sequence
+        Joint state.
+    check : bool
+        Run the gripper collision check (otherwise ``collision_free`` is all True and
+        ``clearance`` all +inf).
+    gripper : Gripper
+        The gripper model.
+    spacing : float
+        Grid spacing (metres) of the points on the faces of the gripper boxes. A
+        grasp is collision-free when every grid point is farther than
+        ``spacing * sqrt(2) / 2`` from the object: then no face of a box meets the
+        object (the SDF is 1-Lipschitz), so the boxes are clear unless a whole
+        primitive hides inside a finger. The test is conservative by up to that
+        distance (about 2 mm by default).
+    min_lever : float
+        Grasps on a revolute part closer to the joint axis than ``min_lever`` times
+        the largest lever among that part's grasps (e.g. on a door's hinge edge)
+        cannot open it and are left out.
+
+    Returns
+    -------
+    WorldGrasps
+    """
+    poses = obj.part_poses(qpos)
+    L = obj.link_poses(qpos)
+    pj = part_joint(obj)
+    rows = []
+    for i, part in enumerate(obj.parts):
+        for g in part.grasps:
+            rows.append((i, poses[i] @ np.asarray(g.pose, dtype=float), float(g.width),
+                         poses[i][:3, :3] @ np.asarray(g.open_dir, dtype=float)))
+    G = len(rows)
+    if G == 0:
+        z = np.zeros((0, 3))
+        return WorldGrasps(np.zeros((0, 4, 4)), np.zeros(0), z, z, np.zeros(0, np.int64), np.zeros(0, np.int64),
+                           np.zeros(0), np.zeros(0, bool), np.zeros(0))
+    part = np.array([r[0] for r in rows], dtype=np.int64)
+    T = np.stack([r[1] for r in rows])
+    width = np.array([r[2] for r in rows])
+    open_dir = np.stack([r[3] for r in rows])
+    joint = pj[part]
+    lever = np.zeros(G)
+    for k in range(G):
+        if joint[k] < 0:
+            continue
+        j = obj.joints[joint[k]]
+        Tj = L[obj.link_index[j.child]]  # joint frame at q (the child link frame)
+        a = Tj[:3, :3] @ j.axis
+        s = _opening_sign(j)
+        if j.type == "prismatic":
+            open_dir[k] = s * a
+        else:
+            r = T[k, :3, 3] - Tj[:3, 3]
+            t = np.cross(a, r)
+            lever[k] = np.linalg.norm(t)
+            if lever[k] > 1e-6:  # on the axis (a knob's centre) keep the template's direction
+                open_dir[k] = s * t / lever[k]
+    n = np.linalg.norm(open_dir, axis=1)
+    open_dir = np.where(n[:, None] > 1e-12, open_dir / np.maximum(n, 1e-12)[:, None], 0.0)
+    longest = np.zeros(len(obj.parts))
+    np.maximum.at(longest, part, lever)
+    revolute = np.array([j >= 0 and obj.joints[j].type in ("revolute", "continuous") for j in joint], dtype=bool)
+    keep = ~revolute | (lever >= min_lever * longest[part])
+    out = WorldGrasps(T, width, T[:, :3, 2].copy(), open_dir, part, joint, lever, np.ones(G, bool),
+                      np.full(G, np.inf)).subset(keep)
+    if check and len(out):
+        out.clearance = gripper_clearance(obj, out.pose, out.width, qpos, gripper, spacing)
+        out.collision_free = out.clearance > collision_margin(spacing)
+    return out
+
+
+def collision_margin(spacing: float) -> float:
+    """Clearance (metres) a grid of ``spacing`` must show for the boxes to be clear."""
+    return spacing * np.sqrt(2.0) / 2.0
+
+
+def gripper_points(pose: np.ndarray, width: np.ndarray, gripper: Gripper = DEFAULT_GRIPPER, spacing: float = 0.003
+                   ) -> tuple[np.ndarray, np.ndarray]:
+    """Grid points (K, 3) on the faces of every grasp's gripper boxes, object frame,
+    and the grasp index (K,) of each point."""
+    pts, gi = [], []
+    for k in range(len(width)):
+        g, _ = box_surface_grid(gripper.boxes(float(width[k])), spacing)
+        pts.append(g @ pose[k, :3, :3].T + pose[k, :3, 3])
+        gi.append(np.full(len(g), k))
+    return np.concatenate(pts), np.concatenate(gi)
+
+
+def gripper_clearance(obj, pose: np.ndarray, width: np.ndarray, qpos=None, gripper: Gripper = DEFAULT_GRIPPER,
+                      spacing: float = 0.003) -> np.ndarray:
+    """Smallest signed distance (G,) between each gripper's box grid and ``obj``.
+
+    Parameters
+    ----------
+    pose : (G, 4, 4) array
+        Gripper frames in the object frame.
+    width : (G,) array
+        Jaw openings (metres).
+    """
+    pts, gi = gripper_points(pose, width, gripper, spacing)
+    d, _ = object_sdf(obj, pts, qpos, max_dist=0.02)
+    out = np.full(len(width), np.inf)
+    np.minimum.at(out, gi, d)
+    return out
+
+
+def mesh_gripper(pose: np.ndarray, width: float, gripper: Gripper = DEFAULT_GRIPPER):
+    """A ``trimesh.Trimesh`` of the gripper boxes at ``pose`` (for pictures)."""
+    import trimesh
+
+    meshes = []
+    for lo, hi in gripper.boxes(width):
+        m = trimesh.creation.box(extents=hi - lo)
+        m.apply_translation((lo + hi) / 2)
+        m.apply_transform(pose)
+        meshes.append(m)
+    return trimesh.util.concatenate(meshes)

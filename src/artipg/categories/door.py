@@ -1,0 +1,157 @@
+"""Doors: framed single and double doors, glazed French doors and sliding barn doors.
+
+Parts: a frame standing on the floor (jambs, head, stops behind the closed leaves,
+optional front casing); one or two leaves (flush slab, stile-and-rail panelled, or
+glazed with glass lites) inset flush with the frame front, each hinged on a jamb
+(revolute about the vertical front edge on the hinge side, opening towards the viewer,
+-x, 0..1.45-1.9 rad); on each leaf a lever or a round knob on both faces at 0.9-1.05 m
+(revolute about the leaf normal: levers turn tip-down 0..0.6-0.9 rad, knobs
+±0.8-1.3 rad) and, on single doors, an optional deadbolt thumb turn on the back face
+(revolute 0..pi/2) with a fixed key cylinder on the front. A barn door is a leaf hung
+in front of a cased opening by straps and rollers on a rail over a header board; it
+slides sideways (prismatic along y, about one leaf width) and has a fixed pull.
+Joints: 1-9 movable. Sizes (metres): leaves 0.7-0.95 x 1.95-2.1 (double doors
+0.55-0.9 per leaf), 35-45 mm thick; barn doors 0.8-1.1 wide.
+"""
+
+from __future__ import annotations
+
+import math
+
+from artipg.geometry import cuboid_between, cylinder
+from artipg.geometry.transforms import rot_y, rot_z, translation
+from artipg.model.part import Part
+from artipg.rules import Category, Slot
+from artipg.templates.frames import door_frame, glazed_panel, panel_leaf, swing_clearance
+from artipg.templates.handles import FRONT_HANDLES, edge_pull, knob_pull
+from artipg.templates.mounting import free_edge_yz, mount_hinged, mount_sliding
+from artipg.templates.panels import slab_door
+from artipg.templates.turn_handles import DOOR_KNOBS, DOOR_LEVERS, mount_turning, thumb_turn
+
+# sub-category -> leaves (lo, hi), leaf width, leaf height
+SIZES = {"single_door": ((1, 1), (0.7, 0.95), (1.95, 2.1)), "double_door": ((2, 2), (0.55, 0.9), (1.95, 2.2)),
+         "french_door": ((1, 2), (0.6, 0.9), (1.95, 2.1)), "barn_door": ((1, 1), (0.8, 1.1), (1.95, 2.15))}
+HANDLES = {**DOOR_LEVERS, **DOOR_KNOBS}
+PULLS = {k: v for k, v in FRONT_HANDLES.items() if k not in (knob_pull, edge_pull)}
+
+
+def glazed_leaf(p, width, height, thickness=None):
+    """A French-door leaf: wide stiles and rails around a grid of glass lites."""
+    rail = p.uniform("stile_width", 0.08, 0.13)
+    return glazed_panel(p, width, height, thickness, "door", rows=p.integers("rows", 1, 5),
+                        cols=p.integers("cols", 1, 3 if width > 0.6 else 2), rail=rail)
+
+
+LEAVES = {"single_door": {slab_door: 3.0, panel_leaf: 3.0, glazed_leaf: 1.0},
+          "double_door": {slab_door: 2.0, panel_leaf: 3.0, glazed_leaf: 1.0},
+          "french_door": {glazed_leaf: 1.0}, "barn_door": {slab_door: 1.0, panel_leaf: 2.0}}
+
+
+def frame(ctx):
+    p = ctx.p
+    n, w, h = SIZES[ctx.sub]
+    n = p.integers("leaves", *n)
+    W, H, t = p.uniform("leaf_width", *w), p.uniform("leaf_height", *h), p.uniform("thickness", 0.035, 0.045)
+    root = ctx.builder.create_link("frame")
+    if ctx.sub == "barn_door":
+        Wo, Ho = W - 2 * p.uniform("overlap", 0.03, 0.06), H - p.uniform("top_overlap", 0.03, 0.06)
+        part = root.add(door_frame(p.scope("frame"), Wo, Ho, t, casing=None, stops=False))
+        return root, dict(n=1, W=W, H=H, t=t, Wo=Wo, Ho=Ho, under=p.uniform("undercut", 0.008, 0.015),
+                          x_wall=part.anchor("front")[0], top=part.anchor("top")[2])
+    ch, cf = p.uniform("hinge_gap", 0.002, 0.004), swing_clearance(t, W, p.uniform("edge_gap", 0.002, 0.003))
+    under, top = p.uniform("undercut", 0.006, 0.015), p.uniform("top_gap", 0.002, 0.004)
+    Wo = n * W + 2 * ch + n * cf
+    root.add(door_frame(p.scope("frame"), Wo, H + under + top, t))
+    return root, dict(n=n, W=W, H=H, t=t, Wo=Wo, ch=ch, under=under)
+
+
+def _leaf(ctx, q, W, H, t):
+    out = ctx.choose("leaf", LEAVES[ctx.sub])(q, W, H, thickness=t)
+    return out if isinstance(out, tuple) else (out, None)
+
+
+def leaves(ctx):
+    root, d = ctx.out["frame"]
+    p, t, W, H = ctx.p, d["t"], d["W"], d["H"]
+    if ctx.sub == "barn_door":
+        return _barn(ctx, root, d)
+    sides = ("+y", "-y") if d["n"] == 2 else (p.choice("hinge", ("+y", "-y")),)
+    lim = p.uniform("limit", 1.45, 1.9)
+    out = []
+    for i, side in enumerate(sides):
+        s = 1.0 if side == "+y" else -1.0
+        cy = s * (d["Wo"] / 2 - d["ch"] - W / 2)
+        leaf, glass = _leaf(ctx, p.scope(f"leaf{i}"), W, H, t)
+        link = mount_hinged(ctx.builder, root, leaf, front_x=t, center_yz=(cy, d["under"] + H / 2), size_yz=(W, H),
+                            side=side, limits=(0.0, lim), name="leaf")
+        if glass is not None:
+            link.add(glass, leaf.pose)
+        out.append((link, leaf, side, s))
+    return out
+
+
+def hardware(ctx):
+    if ctx.sub == "barn_door":
+        return
+    p, d = ctx.p, ctx.out["frame"][1]
+    tmpl = ctx.choose("handle", HANDLES)
+    lever = tmpl in DOOR_LEVERS
+    a = p.uniform("lever_limit", 0.6, 0.9) if lever else p.uniform("knob_limit", 0.8, 1.3)
+    lim = (0.0, a) if lever else (-a, a)
+    hz = p.uniform("handle_height", 0.9, 1.05) - d["under"] - d["H"] / 2
+    lock = d["n"] == 1 and p.flag("deadbolt", 0.4)
+    for i, (link, leaf, side, s) in enumerate(ctx.out["leaves"]):
+        hy, _ = free_edge_yz(side, (d["W"], d["H"]), p.uniform(f"backset{i}", 0.06, 0.07))
+        front = leaf.pose @ translation(-d["t"], hy, hz)
+        back = leaf.pose @ translation(0.0, hy, hz) @ rot_z(math.pi)
+        for face, T, sgn in (("front", front, s), ("back", back, -s)):
+            mount_turning(ctx.builder, link, tmpl(p.scope(f"handle{i}_{face}"), side=sgn), T, lim, name="handle")
+        if lock:
+            dz = p.uniform("deadbolt_offset", 0.12, 0.18)
+            mount_turning(ctx.builder, link, thumb_turn(p.scope("thumb_turn")), back @ translation(0, 0, dz),
+                          (0.0, math.pi / 2), name="thumb_turn")
+            r = p.uniform("cylinder_radius", 0.014, 0.02)
+            link.add(Part("handle", "key_cylinder", [cylinder(r, 0.008, front @ translation(0.004 - 0.008, 0, dz)
+                                                              @ rot_y(math.pi / 2), role="rose")]))
+
+
+def _barn(ctx, root, d):
+    p, t, W, H = ctx.p, d["t"], d["W"], d["H"]
+    hdr_t = p.uniform("header_thickness", 0.015, 0.025)
+    xb = d["x_wall"] - hdr_t - p.uniform("wall_gap", 0.005, 0.015)  # leaf back face
+    st, wt, e = p.uniform("strap_thickness", 0.005, 0.008), p.uniform("wheel_width", 0.012, 0.02), 0.003
+    R, rt, rh = p.uniform("wheel_radius", 0.03, 0.05), p.uniform("rail_thickness", 0.006, 0.01), 0.03
+    xs = xb - t - st  # strap front face
+    xr = xs + st + e + wt / 2  # wheel / rail centre
+    zt = d["under"] + H
+    zr = zt + p.uniform("rail_gap", 0.03, 0.06) + rh  # rail top
+    travel, s = W + p.uniform("extra_travel", 0.0, 0.05), p.choice("direction", (1.0, -1.0))
+    y0, y1 = sorted((-s * (W / 2 + 0.05), s * (W / 2 + travel + 0.05)))
+    hf = d["x_wall"] - hdr_t
+    prims = [cuboid_between((hf, y0, d["top"] - 0.05), (d["x_wall"], y1, zr + 2 * R + 0.03), role="header"),
+             cuboid_between((xr - rt / 2, y0, zr - rh), (xr + rt / 2, y1, zr), role="rail")]
+    for k in range(4):
+        y = y0 + 0.04 + k * (y1 - y0 - 0.08) / 3
+        prims.append(cylinder(0.008, hf - xr, translation((xr + hf) / 2, y, zr - rh / 2) @ rot_y(math.pi / 2),
+                              role="spacer"))
+    root.add(Part("frame", "barn_rail", prims))
+    leaf, _ = _leaf(ctx, p.scope("leaf0"), W, H, t)
+    link = mount_sliding(ctx.builder, root, leaf, origin=translation(xb, 0.0, d["under"] + H / 2),
+                         axis=(0.0, s, 0.0), limits=(0.0, travel), name="leaf")
+    hw, zc = [], zr + R - zt + H / 2  # wheel centre height in the leaf's frame
+    for y in (-0.32 * W, 0.32 * W):  # strap on the leaf face, axle, roller on the rail
+        hw += [cuboid_between((-t - st, y - 0.02, H / 2 - 0.12), (-t, y + 0.02, zc + 0.02), role="strap"),
+               cylinder(0.006, e + 0.002, translation(-t + e / 2, y, zc) @ rot_y(math.pi / 2), role="axle"),
+               cylinder(R, wt, translation(xr - xb, y, zc) @ rot_y(math.pi / 2), role="wheel")]
+    link.add(Part("hinge", "barn_hanger", hw))
+    pull = ctx.choose("handle", PULLS)(p.scope("pull"), length=p.uniform("pull_length", 0.2, 0.35))
+    link.add(pull, translation(-t, -s * (W / 2 - 0.08), p.uniform("pull_height", 0.95, 1.1) - d["under"] - H / 2))
+    return [(link, leaf, None, s)]
+
+
+RULE = Category(
+    name="door",
+    subcategories={"single_door": 3.0, "double_door": 1.5, "french_door": 1.0, "barn_door": 1.0},
+    slots=(Slot("frame", frame), Slot("leaves", leaves, after=("frame",)),
+           Slot("hardware", hardware, after=("leaves",))),
+)

@@ -1,0 +1,149 @@
+"""Microwave ovens: countertop (knob, button or combo panels) and over-the-range.
+
+Parts: a housing (open-front cavity on the left, control bay on the right) on optional
+feet; a windowed door over the cavity, hinged on its left (+y) edge and swinging out
+90-110 degrees, with an optional vertical handle near its free edge; a control panel
+in front of the bay carrying a display and a keypad well of push buttons (prismatic,
+pressed 3-6 mm along +x), one to three knobs (revolute timer dials or continuous
+encoders), or both; a door-release button when the door has no handle; an optional
+glass turntable (continuous about z) in the cavity. Over-the-range models add a vent
+grille across the top and two rocker switches (revolute).
+Sizes (metres): countertop 0.44-0.6 wide, 0.32-0.45 deep, 0.26-0.35 tall;
+over-the-range 0.74-0.77 x 0.38-0.43 x 0.39-0.44.
+"""
+
+from __future__ import annotations
+
+from artipg.geometry.transforms import translation
+from artipg.rules import Category, Slot
+from artipg.templates.appliance import appliance_housing, control_panel, display, turntable, vent_grille, window_door
+from artipg.templates.controls import (BUTTONS, KNOBS, dial_knob, mount_button, mount_knob, mount_rocker, rect_button,
+                                       rocker_switch)
+from artipg.templates.handles import arch_handle, bar_handle, edge_pull, flat_bar_handle
+from artipg.templates.mounting import free_edge_yz, handle_pose, mount_hinged
+from artipg.templates.panels import glass_door
+from artipg.templates.supports import bun_feet
+
+# sub-category -> width, depth, height ranges, bay width fraction, (knobs lo, hi), keypad rows (lo, hi)
+SIZES = {
+    "knob_panel": ((0.44, 0.55), (0.32, 0.42), (0.26, 0.33), (0.2, 0.27), (1, 3), (0, 0)),
+    "button_panel": ((0.45, 0.6), (0.33, 0.45), (0.27, 0.35), (0.2, 0.26), (0, 0), (4, 6)),
+    "combo": ((0.45, 0.6), (0.33, 0.45), (0.27, 0.35), (0.2, 0.26), (1, 1), (2, 4)),
+    "over_the_range": ((0.74, 0.77), (0.38, 0.43), (0.39, 0.44), (0.17, 0.21), (0, 0), (4, 6)),
+}
+HANDLES = {bar_handle: 2.0, flat_bar_handle: 2.0, arch_handle: 1.0, edge_pull: 1.0}
+
+
+def body(ctx):
+    p = ctx.p
+    w, d, h, bay, *_ = SIZES[ctx.sub]
+    W, D, H = p.uniform("width", *w), p.uniform("depth", *d), p.uniform("height", *h)
+    root = ctx.builder.create_link("base")
+    fh = p.uniform("foot_height", 0.008, 0.02) if ctx.sub != "over_the_range" and p.flag("feet", 0.7) else 0.0
+    if fh:
+        root.add(bun_feet(p.scope("feet"), 0.9 * D, 0.9 * W, fh))
+    part = appliance_housing(p, D, W, H - fh, p.uniform("bay_width", *bay) * W)
+    pose = translation(0, 0, fh + (H - fh) / 2)
+    root.add(part, pose)
+    t = p.uniform("front_thickness", 0.025, 0.04)
+    z_top = H - (p.uniform("vent_height", 0.035, 0.06) if ctx.sub == "over_the_range" else 0.0)
+    if z_top < H:
+        root.add(vent_grille(p.scope("vent"), W, H - z_top, t), translation(-D / 2, 0, (H + z_top) / 2))
+    return root, part, pose, (W, D, H, fh, z_top, t)
+
+
+def door(ctx):
+    root, part, pose, (W, D, H, fh, z_top, t) = ctx.out["body"]
+    p = ctx.p
+    gap = p.uniform("gap", 0.002, 0.004)
+    y0, y1 = part.anchor("bay_hi")[1] + gap, W / 2  # door spans the cavity side of the front
+    size = (y1 - y0, z_top - fh - 2 * gap)
+    centre = ((y0 + y1) / 2, (z_top + fh) / 2)
+    tmpl = ctx.choose("door", {window_door: 3.0, glass_door: 1.0})
+    dr = tmpl(p.scope("door"), *size, thickness=t)
+    link = mount_hinged(ctx.builder, root, dr, front_x=-D / 2, center_yz=centre, size_yz=size, side="+y",
+                        limits=(0.0, p.uniform("open_angle", 1.57, 1.92)))
+    has_handle = ctx.sub == "over_the_range" or p.flag("handle", 0.5)
+    if has_handle:
+        h = ctx.choose("handle", HANDLES)(p.scope("handle"), length=p.uniform("handle_length", 0.5, 0.8) * size[1])
+        hy, hz = free_edge_yz("+y", size, p.uniform("handle_margin", 0.025, 0.04))
+        link.add(h, handle_pose(dr.pose, t, hy, 0.0, False))
+    return has_handle
+
+
+def panel(ctx):
+    root, part, pose, (W, D, H, fh, z_top, t) = ctx.out["body"]
+    p, b, sub = ctx.p, ctx.builder, ctx.sub
+    *_, (k_lo, k_hi), (r_lo, r_hi) = SIZES[sub]
+    y0, y1 = -W / 2, part.anchor("bay_hi")[1] - p.uniform("gap", 0.002, 0.004)
+    pw, ph, pc = y1 - y0, z_top - fh, ((y0 + y1) / 2, (z_top + fh) / 2)
+    m = p.uniform("margin", 0.012, 0.02)
+    rows, n_knobs, release = p.integers("rows", r_lo, r_hi), p.integers("knobs", k_lo, k_hi), not ctx.out["door"]
+    R = min(p.uniform("knob_radius", 0.014, 0.03), pw / 2 - m)
+    pitch = p.uniform("key_pitch", 0.016, 0.026)
+    blocks = [("display", p.uniform("display_height", 0.018, 0.03))] if rows else []
+    blocks += [("knob", 2 * R)] * (n_knobs if sub == "knob_panel" else 0)
+    blocks += [("well", (rows + release) * pitch)] if rows + release else []
+    blocks += [("knob", 2 * R)] * (n_knobs if sub == "combo" else 0)
+    blocks += [("rockers", 0.025)] if sub == "over_the_range" else []
+    f = min(1.0, (ph - m * (len(blocks) + 1)) / sum(h for _, h in blocks))  # shrink to fit
+    front = translation(-D / 2, *pc)
+    z, well, items = ph / 2 - m, None, []
+    for kind, h in blocks:
+        h *= f
+        if kind == "well":
+            well = (-pw / 2 + m, pw / 2 - m, z - h, z)
+        else:
+            items.append((kind, z - h / 2, h))
+        z -= h + m
+    root.add(control_panel(p, pw, ph, t, keypad=well), front)
+    knob_t = ctx.choose("knob", KNOBS if sub == "knob_panel" else {dial_knob: 1.0}) if n_knobs else None
+    spin = p.flag("continuous", 0.4)
+    for i, (kind, zc, h) in enumerate(items):
+        q = p.scope(f"{kind}{i}")
+        T = front @ translation(-t, 0, zc)
+        if kind == "display":
+            root.add(display(q, 0.75 * pw, h), T)
+        elif kind == "knob":
+            mount_knob(b, root, knob_t(q, radius=h / 2), T, continuous=spin, limits=(0.0, q.uniform("turn", 4.0, 5.8)))
+        else:
+            for j in (-1, 1):
+                sw = rocker_switch(q.scope(f"rocker{j}"), width=0.3 * pw, height=h)
+                mount_rocker(b, root, sw, T @ translation(0, j * 0.22 * pw, 0))
+    if well is None:
+        return
+    cols = p.integers("cols", 2, 4 if pw > 0.11 else 3)
+    key = ctx.choose("button", BUTTONS)
+    g = p.uniform("key_gap", 0.003, 0.006)
+    cw, pitch = (well[1] - well[0]) / cols, (well[3] - well[2]) / (rows + release)
+    for r in range(rows + release):
+        last = release and r == rows
+        zc = well[3] - (r + 0.5) * pitch
+        for c in range(1 if last else cols):
+            q = p.scope(f"key{r}_{c}")
+            yc = 0.0 if last else well[0] + (c + 0.5) * cw
+            reach = t + q.uniform("proud", 0.001, 0.003)
+            if last or key is rect_button:
+                cap = rect_button(q, width=(well[1] - well[0] if last else cw) - g, height=pitch - g, reach=reach)
+            else:
+                cap = key(q, radius=(min(cw, pitch) - g) / 2, reach=reach)
+            mount_button(b, root, cap, translation(-D / 2, pc[0] + yc, pc[1] + zc))
+
+
+def table(ctx):
+    root, part, pose, _ = ctx.out["body"]
+    if not ctx.p.flag("turntable", 0.75):
+        return
+    lo, hi = pose @ [*part.anchor("cavity_lo"), 1.0], pose @ [*part.anchor("cavity_hi"), 1.0]
+    r = min(hi[0] - lo[0], hi[1] - lo[1]) / 2 - ctx.p.uniform("margin", 0.01, 0.03)
+    link = ctx.builder.create_link("turntable", root)
+    link.set_joint("continuous", translation((lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, lo[2]))
+    link.add(turntable(ctx.p, r))
+
+
+RULE = Category(
+    name="microwave",
+    subcategories={"knob_panel": 2.0, "button_panel": 3.0, "combo": 2.0, "over_the_range": 1.0},
+    slots=(Slot("body", body), Slot("door", door, after=("body",)), Slot("panel", panel, after=("door",)),
+           Slot("turntable", table, after=("body",))),
+)

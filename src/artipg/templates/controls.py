@@ -1,0 +1,193 @@
+"""Panel controls: rotary knobs and dials, push buttons and rocker switches.
+
+Frame convention (every template here; reuse them on ovens, washing machines, safes):
+the control is mounted on a flat surface whose outward normal is **-x**; the origin is
+the mount point on that surface (the surface is the plane x = 0), the control protrudes
+along -x and +z is "up" on the panel. To mount on a surface facing another way, rotate
+the mount pose (e.g. ``rot_z(pi / 2)`` for a surface facing -y).
+
+Joints (set them with :func:`mount_knob`, :func:`mount_button`, :func:`mount_rocker`):
+
+- knobs: revolute or continuous about +x through the origin (positive = clockwise seen
+  from the front). Their back face lies on x = 0, so any angle is collision free.
+- push buttons: prismatic along +x (into the surface), limits (0, travel). The cap
+  stands off the surface by ``travel + clearance``: anchor ``back`` is its back face at
+  rest and ``stop`` where that face is when fully pressed, so a flat surface (or the
+  floor of a keypad well) behind the cap is all a caller needs.
+- rockers: revolute about +z through the origin; the rest pose is tilted by ``-tilt``
+  (one side pressed), limits (0, 2 tilt); the stand-off keeps the cap off the surface.
+
+Anchors: ``front`` (centre of the face a finger touches), ``back``; knobs also ``axis``.
+Every template takes the recorder ``p`` first; sizes fixed by the caller (the largest
+radius or cap size the panel layout allows) are keyword arguments.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from artipg.geometry import cuboid, cylinder, frustum, prism
+from artipg.geometry.transforms import rot_y, rot_z, translation
+from artipg.model.part import Grasp, Part, Region
+
+_ALONG_X = rot_y(math.pi / 2)    # local z -> +x (frustum r_bottom at the front, -x)
+_ALONG_MX = rot_y(-math.pi / 2)  # local z -> -x (frustum r_bottom at the back, +x)
+# gripper frames approaching +x (towards the surface); jaws closing along y or along z
+_JAW_Y = np.array([[0.0, 0.0, 1.0, 0.0], [0.0, 1.0, 0.0, 0.0], [-1.0, 0.0, 0.0, 0.0], [0.0, 0.0, 0.0, 1.0]])
+_JAW_Z = np.array([[0.0, 0.0, 1.0, 0.0], [1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 0.0, 1.0]])
+
+
+def _x_disc(r_back: float, r_front: float, x0: float, x1: float, role: str):
+    """Frustum along x from x0 (back, > x1) to x1 (front), radii at each end."""
+    return frustum(r_back, r_front, x0 - x1, translation((x0 + x1) / 2, 0, 0) @ _ALONG_MX, role=role)
+
+
+def _knob_part(template, prims, x_grip, width_y, width_z, depth, semantic="knob") -> Part:
+    grasps = []
+    for base, w in ((_JAW_Y, width_y), (_JAW_Z, width_z)):
+        T = base.copy()
+        T[0, 3] = x_grip
+        grasps.append(Grasp(T, w + 0.02))
+    return Part(semantic, template, prims, anchors={"front": (-depth, 0.0, 0.0), "back": (0.0, 0.0, 0.0),
+                                                     "axis": (1.0, 0.0, 0.0)},
+                regions={"rotate": Region(("grip",)), "grasp": Region(("grip",))}, grasps=grasps,
+                actionable="hinge_knob")
+
+
+def round_knob(p, radius: float | None = None) -> Part:
+    """Two-tier round knob: a thin skirt disc and a narrower cylindrical grip."""
+    R = p.uniform("radius", 0.012, 0.025, fixed=radius)
+    skirt = p.uniform("skirt_depth", 0.002, 0.005)
+    rg = p.uniform("grip_ratio", 0.6, 0.9) * R
+    d = p.uniform("grip_depth", 0.012, 0.025)
+    prims = [_x_disc(R, R, 0.0, -skirt, "skirt"), _x_disc(rg, rg * p.uniform("grip_taper", 0.85, 1.0), -skirt,
+                                                           -skirt - d, "grip")]
+    return _knob_part("round_knob", prims, -skirt - d / 2, 2 * rg, 2 * rg, skirt + d)
+
+
+def pointer_knob(p, radius: float | None = None) -> Part:
+    """Oven-style knob: a round base with a raised bar across its face (the grip)."""
+    R = p.uniform("radius", 0.015, 0.028, fixed=radius)
+    base = p.uniform("base_depth", 0.006, 0.012)
+    bar_w = p.uniform("bar_width", 0.25, 0.4) * R
+    bar_d = p.uniform("bar_depth", 0.012, 0.022)
+    bar_l = p.uniform("bar_length", 0.8, 0.95) * 2 * R
+    prims = [_x_disc(R, R * p.uniform("base_taper", 0.85, 1.0), 0.0, -base, "base"),
+             cuboid(bar_d, bar_w, bar_l, translation(-base - bar_d / 2, 0, 0), role="grip")]
+    return _knob_part("pointer_knob", prims, -base - bar_d / 2, bar_w, bar_l, base + bar_d)
+
+
+def fluted_knob(p, radius: float | None = None) -> Part:
+    """Knurled knob: a many-sided prism grip on a tapered collar."""
+    R = p.uniform("radius", 0.012, 0.025, fixed=radius)
+    n = p.integers("flutes", 8, 14)
+    collar = p.uniform("collar_depth", 0.003, 0.006)
+    d = p.uniform("grip_depth", 0.012, 0.022)
+    prims = [_x_disc(R, 0.9 * R, 0.0, -collar, "collar"),
+             prism(0.9 * R, d, n, translation(-collar - d / 2, 0, 0) @ _ALONG_X, role="grip")]
+    return _knob_part("fluted_knob", prims, -collar - d / 2, 1.8 * R, 1.8 * R, collar + d)
+
+
+def dial_knob(p, radius: float | None = None) -> Part:
+    """Large shallow timer dial: a tapered disc with a small pointer ridge."""
+    R = p.uniform("radius", 0.02, 0.035, fixed=radius)
+    d = p.uniform("depth", 0.008, 0.015)
+    ridge = p.uniform("ridge_depth", 0.003, 0.006)
+    rf = p.uniform("front_ratio", 0.8, 0.95) * R
+    prims = [_x_disc(R, rf, 0.0, -d, "grip"),
+             cuboid(ridge, 0.2 * rf, 1.6 * rf, translation(-d - ridge / 2, 0, 0), role="grip")]
+    return _knob_part("dial_knob", prims, -d / 2, 2 * rf, 2 * rf, d + ridge, semantic="knob")
+
+
+KNOBS = {round_knob: 2.0, pointer_knob: 1.5, fluted_knob: 1.0, dial_knob: 1.0}
+
+
+def _button_part(template, prims, stand, depth, travel, face, sem="button", act="slider_button") -> Part:
+    x = -stand - depth
+    box = np.array([[x - 1e-4, -face[0] / 2, -face[1] / 2], [x + 1e-4, face[0] / 2, face[1] / 2]])
+    return Part(sem, template, prims,
+                anchors={"front": (x, 0.0, 0.0), "back": (-stand, 0.0, 0.0), "stop": (-stand + travel, 0.0, 0.0)},
+                regions={"press": Region(("cap",), box), "push": Region(("cap",), box)}, actionable=act)
+
+
+def _stand_depth(p, reach, travel):
+    tr = p.uniform("travel", 0.003, 0.006, fixed=travel)
+    stand = tr + p.uniform("clearance", 0.001, 0.002)
+    d = p.uniform("depth", 0.004, 0.01) if reach is None else p.uniform("depth", 0, 0, fixed=reach - stand)
+    return tr, stand, d
+
+
+def rect_button(p, width: float | None = None, height: float | None = None, reach: float | None = None,
+                travel: float | None = None) -> Part:
+    """Rectangular push-button cap (keypads, door-release buttons).
+
+    ``reach`` (metres) is how far the cap's front stands off the mount surface (a
+    caller with a keypad well sets it to the well depth plus the proud height).
+    """
+    w = p.uniform("width", 0.012, 0.03, fixed=width)
+    h = p.uniform("height", 0.008, 0.02, fixed=height)
+    tr, stand, d = _stand_depth(p, reach, travel)
+    prim = cuboid(d, w, h, translation(-stand - d / 2, 0, 0), role="cap")
+    return _button_part("rect_button", [prim], stand, d, tr, (w, h))
+
+
+def round_button(p, radius: float | None = None, reach: float | None = None, travel: float | None = None) -> Part:
+    """Round push-button cap, optionally with a bevelled face (``reach`` as in :func:`rect_button`)."""
+    r = p.uniform("radius", 0.005, 0.012, fixed=radius)
+    tr, stand, d = _stand_depth(p, reach, travel)
+    prim = _x_disc(r, r * p.uniform("bevel", 0.8, 1.0), -stand, -stand - d, "cap")
+    return _button_part("round_button", [prim], stand, d, tr, (2 * r, 2 * r))
+
+
+BUTTONS = {rect_button: 2.0, round_button: 1.0}
+
+
+def rocker_switch(p, width: float | None = None, height: float | None = None) -> Part:
+    """Rocker: a cap that tilts about the vertical axis through its centre.
+
+    Anchor ``edge_+y`` is the back edge of the cap; :func:`mount_rocker` derives the
+    largest tilt that keeps the back edges off the surface from it.
+    """
+    w = p.uniform("width", 0.012, 0.025, fixed=width)
+    h = p.uniform("height", 0.015, 0.03, fixed=height)
+    d = p.uniform("depth", 0.006, 0.01)
+    stand = p.uniform("stand_off", 0.002, 0.004)
+    part = _button_part("rocker_switch", [cuboid(d, w, h, translation(-stand - d / 2, 0, 0), role="cap")],
+                        stand, d, 0.0, (w, h), sem="switch", act="none")
+    part.anchors["edge_+y"] = (-stand, w / 2, 0.0)
+    return part
+
+
+def rocker_tilt(part) -> float:
+    """Largest safe tilt (radians) of a rocker cap: 0.9 atan(stand-off / half width)."""
+    x, y, _ = part.anchors["edge_+y"]
+    return 0.9 * math.atan(-x / y)
+
+
+def mount_knob(builder, parent, part, pose: np.ndarray, *, continuous: bool, limits=(0.0, 2 * math.pi),
+               name: str = "knob"):
+    """Attach ``part`` on a knob joint about the mount frame's +x (see module docstring)."""
+    link = builder.create_link(name, parent)
+    link.set_joint("continuous" if continuous else "revolute", pose, axis=(1.0, 0.0, 0.0), limits=limits)
+    link.add(part)
+    return link
+
+
+def mount_button(builder, parent, part, pose: np.ndarray, name: str = "button"):
+    """Attach a push button on a prismatic joint along the mount frame's +x."""
+    travel = float(part.anchors["stop"][0] - part.anchors["back"][0])
+    link = builder.create_link(name, parent)
+    link.set_joint("prismatic", pose, axis=(1.0, 0.0, 0.0), limits=(0.0, travel))
+    link.add(part)
+    return link
+
+
+def mount_rocker(builder, parent, part, pose: np.ndarray, name: str = "switch"):
+    """Attach a rocker switch: revolute about the mount frame's +z, rest tilted by -tilt."""
+    tilt = rocker_tilt(part)
+    link = builder.create_link(name, parent)
+    link.set_joint("revolute", pose @ rot_z(-tilt), axis=(0.0, 0.0, 1.0), limits=(0.0, 2 * tilt))
+    link.add(part)
+    return link

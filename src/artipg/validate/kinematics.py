@@ -1,0 +1,151 @@
+"""Kinematic trees for validation: links, joints and vectorised joint motions.
+
+The same structure is built from an :class:`artipg.model.ArticulatedObject` or from a
+URDF (:mod:`artipg.validate.folder`), so every check runs on both. Frames follow the
+URDF: a link frame is its parent joint's frame, poses are (4, 4) matrices mapping
+child-frame points into the parent (object) frame, metres and radians.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+MOVABLE = ("revolute", "prismatic", "continuous")
+
+
+@dataclass
+class Kinematics:
+    """A kinematic tree in topological order (root first).
+
+    Attributes
+    ----------
+    names : list of str
+        Link names, (L,).
+    parent : (L,) int64
+        Parent link index (-1 for the root).
+    joint_names : list of str
+        Name of each link's parent joint ("" for the root).
+    joint_types : list of str
+        ``fixed``, ``revolute``, ``prismatic`` or ``continuous`` ("fixed" for the root).
+    origin : (L, 4, 4) float64
+        Joint frame in the parent link frame (identity for the root).
+    axis : (L, 3) float64
+        Unit joint axis in the joint frame.
+    limits : (L, 2) float64
+        Joint limits (radians or metres; ``-inf, inf`` for continuous joints).
+    """
+
+    names: list
+    parent: np.ndarray
+    joint_names: list
+    joint_types: list
+    origin: np.ndarray
+    axis: np.ndarray
+    limits: np.ndarray
+
+    @classmethod
+    def of(cls, obj) -> "Kinematics":
+        """The tree of an :class:`artipg.model.ArticulatedObject`."""
+        idx = obj.link_index
+        L = len(obj.links)
+        parent = np.full(L, -1, dtype=np.int64)
+        origin = np.tile(np.eye(4), (L, 1, 1))
+        axis = np.zeros((L, 3))
+        limits = np.zeros((L, 2))
+        jn, jt = [""] * L, ["fixed"] * L
+        for i, link in enumerate(obj.links[1:], start=1):
+            j = link.joint
+            parent[i] = idx[j.parent]
+            origin[i] = j.origin
+            axis[i] = j.axis
+            limits[i] = j.limits
+            jn[i], jt[i] = j.name, j.type
+        return cls([lk.name for lk in obj.links], parent, jn, jt, origin, axis, limits)
+
+    @property
+    def n_links(self) -> int:
+        return len(self.names)
+
+    def movable(self) -> np.ndarray:
+        """Indices of links whose parent joint can move."""
+        return np.array([i for i, t in enumerate(self.joint_types) if t in MOVABLE], dtype=np.int64)
+
+    def poses(self, q: dict | None = None) -> np.ndarray:
+        """Link poses (L, 4, 4) in the object frame; ``q`` maps joint name -> value."""
+        q = q or {}
+        T = np.empty((self.n_links, 4, 4))
+        T[0] = np.eye(4)
+        for i in range(1, self.n_links):
+            Ti = T[self.parent[i]] @ self.origin[i]
+            v = q.get(self.joint_names[i], 0.0)
+            if v and self.joint_types[i] in MOVABLE:
+                Ti = Ti @ motion(self.joint_types[i], self.axis[i], np.array([v]))[0]
+            T[i] = Ti
+        return T
+
+    def subtree(self, i: int) -> np.ndarray:
+        """Boolean mask (L,) of link ``i`` and its descendants."""
+        m = np.zeros(self.n_links, dtype=bool)
+        m[i] = True
+        for k in range(i + 1, self.n_links):  # topological order: parents come first
+            if self.parent[k] >= 0 and m[self.parent[k]]:
+                m[k] = True
+        return m
+
+    def sweep_values(self, i: int, n: int = 16) -> np.ndarray:
+        """``n`` joint values of link ``i``'s joint spread over its range, rest excluded.
+
+        Revolute / prismatic: ``n + 1`` evenly spaced values from lower to upper limit
+        without the value 0 (the rest pose, checked separately) when it is one of
+        them. Continuous: ``n`` angles of a full turn, 0 excluded.
+        """
+        if self.joint_types[i] == "continuous":
+            return 2.0 * np.pi * np.arange(1, n + 1) / (n + 1)
+        lo, hi = self.limits[i]
+        v = np.linspace(lo, hi, n + 1)
+        return v[np.abs(v) > 1e-12]
+
+    def open_values(self, frac: float) -> dict:
+        """Every movable joint at ``frac`` of its range (continuous: ``frac`` * π)."""
+        q = {}
+        for i in self.movable():
+            if self.joint_types[i] == "continuous":
+                q[self.joint_names[i]] = frac * np.pi
+            else:
+                lo, hi = self.limits[i]
+                q[self.joint_names[i]] = lo + frac * (hi - lo)
+        return q
+
+
+def motion(jtype: str, axis: np.ndarray, q: np.ndarray) -> np.ndarray:
+    """Joint motions (K, 4, 4) for values ``q`` (K,) about / along unit ``axis`` (3,)."""
+    K = len(q)
+    T = np.tile(np.eye(4), (K, 1, 1))
+    if jtype == "prismatic":
+        T[:, :3, 3] = q[:, None] * axis[None]
+        return T
+    x, y, z = axis
+    c, s = np.cos(q), np.sin(q)
+    C = 1.0 - c
+    T[:, 0, 0] = c + x * x * C
+    T[:, 0, 1] = x * y * C - z * s
+    T[:, 0, 2] = x * z * C + y * s
+    T[:, 1, 0] = y * x * C + z * s
+    T[:, 1, 1] = c + y * y * C
+    T[:, 1, 2] = y * z * C - x * s
+    T[:, 2, 0] = z * x * C - y * s
+    T[:, 2, 1] = z * y * C + x * s
+    T[:, 2, 2] = c + z * z * C
+    return T
+
+
+def rigid_inverse(T: np.ndarray) -> np.ndarray:
+    """Inverse of rigid transforms (..., 4, 4)."""
+    out = np.zeros_like(T)
+    Rt = np.swapaxes(T[..., :3, :3], -1, -2)
+    out[..., :3, :3] = Rt
+    out[..., :3, 3] = -np.einsum("...ij,...j->...i", Rt, T[..., :3, 3])
+    out[..., 3, 3] = 1.0
+    return out
