@@ -13,6 +13,9 @@ import typer
 
 COMMAND_MODULES = (
     "artipg.commands.generate",
+    "artipg.commands.eval",
+    "artipg.commands.render",
+    "artipg.commands.validate",
 )
 
 app = typer.Typer(add_completion=False, no_args_is_help=True, pretty_exceptions_enable=False,

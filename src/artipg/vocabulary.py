@@ -45,6 +45,7 @@ SEMANTIC_LABELS: tuple[str, ...] = (
     "sash",        # window sash
     "nozzle",
     "lens",        # eyeglass lens
+    "touchpad",    # laptop touchpad
 )
 
 LABEL_ID: dict[str, int] = {name: i for i, name in enumerate(SEMANTIC_LABELS)}

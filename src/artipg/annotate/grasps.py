@@ -13,13 +13,14 @@ frame) and mapped to the object frame with the part's pose at ``qpos``. Each one
   joint at or above its link. Parts on the root link use the template's ``open_dir``.
 
 Gripper frame (as on the templates): +z is the approach direction (towards the part),
-+y the axis along which the jaws close, origin between the finger tips' centre line
-at the middle of the grip.
++y the axis along which the jaws close, origin between the finger tips (as
+:class:`artipg.model.part.Grasp` defines it).
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import lru_cache
 
 import numpy as np
 
@@ -32,14 +33,15 @@ class Gripper:
 
     Fingers are ``finger_thickness`` thick along y with their inner faces at
     ``y = ±width / 2``, ``finger_width`` wide along x and ``finger_length`` long along
-    z, reaching ``tip_depth`` beyond the origin; the palm closes them off behind.
+    z, their tips ``tip_depth`` beyond the origin (0: the tips are at the origin, the
+    convention of :class:`artipg.model.part.Grasp`); the palm closes them off behind.
     Defaults are close to a Franka Panda hand.
     """
 
     finger_length: float = 0.045
     finger_width: float = 0.018
     finger_thickness: float = 0.01
-    tip_depth: float = 0.008
+    tip_depth: float = 0.0
     palm_thickness: float = 0.02
     palm_width: float = 0.06
 
@@ -88,7 +90,7 @@ class WorldGrasps:
     Attributes
     ----------
     pose : (G, 4, 4) float64
-        Gripper frames (+z approach, +y jaw axis, origin at the grip centre).
+        Gripper frames (+z approach, +y jaw axis, origin between the finger tips).
     width : (G,) float64
         Jaw opening.
     approach : (G, 3) float64
@@ -146,7 +148,7 @@ def _opening_sign(joint) -> float:
     return 1.0 if hi >= -lo else -1.0
 
 
-def world_grasps(obj, qpos=None, check: bool = True, gripper: Gripper = DEFAULT_GRIPPER, spacing: float = 0.003,
+def world_grasps(obj, qpos=None, check: bool = True, gripper: Gripper = DEFAULT_GRIPPER, spacing: float = 0.004,
                  min_lever: float = 0.25) -> WorldGrasps:
     """All template grasps of ``obj`` in the object frame at ``qpos``.
 
@@ -166,7 +168,7 @@ def world_grasps(obj, qpos=None, check: bool = True, gripper: Gripper = DEFAULT_
         ``spacing * sqrt(2) / 2`` from the object: then no face of a box meets the
         object (the SDF is 1-Lipschitz), so the boxes are clear unless a whole
         primitive hides inside a finger. The test is conservative by up to that
-        distance (about 2 mm by default).
+        distance (about 3 mm by default).
     min_lever : float
         Grasps on a revolute part closer to the joint axis than ``min_lever`` times
         the largest lever among that part's grasps (e.g. on a door's hinge edge)
@@ -229,20 +231,28 @@ def collision_margin(spacing: float) -> float:
     return spacing * np.sqrt(2.0) / 2.0
 
 
-def gripper_points(pose: np.ndarray, width: np.ndarray, gripper: Gripper = DEFAULT_GRIPPER, spacing: float = 0.003
+def gripper_points(pose: np.ndarray, width: np.ndarray, gripper: Gripper = DEFAULT_GRIPPER, spacing: float = 0.004
                    ) -> tuple[np.ndarray, np.ndarray]:
     """Grid points (K, 3) on the faces of every grasp's gripper boxes, object frame,
     and the grasp index (K,) of each point."""
     pts, gi = [], []
     for k in range(len(width)):
-        g, _ = box_surface_grid(gripper.boxes(float(width[k])), spacing)
-        pts.append(g @ pose[k, :3, :3].T + pose[k, :3, 3])
+        g = _gripper_grid(gripper, round(float(width[k]), 6), spacing)
+        R = pose[k, :3, :3]
+        pts.append(g[:, :1] * R[:, 0] + g[:, 1:2] * R[:, 1] + g[:, 2:] * R[:, 2] + pose[k, :3, 3])
         gi.append(np.full(len(g), k))
     return np.concatenate(pts), np.concatenate(gi)
 
 
+@lru_cache(maxsize=256)
+def _gripper_grid(gripper: Gripper, width: float, spacing: float) -> np.ndarray:
+    g, _ = box_surface_grid(gripper.boxes(width), spacing)
+    g.flags.writeable = False
+    return g
+
+
 def gripper_clearance(obj, pose: np.ndarray, width: np.ndarray, qpos=None, gripper: Gripper = DEFAULT_GRIPPER,
-                      spacing: float = 0.003) -> np.ndarray:
+                      spacing: float = 0.004) -> np.ndarray:
     """Smallest signed distance (G,) between each gripper's box grid and ``obj``.
 
     Parameters
@@ -253,7 +263,7 @@ def gripper_clearance(obj, pose: np.ndarray, width: np.ndarray, qpos=None, gripp
         Jaw openings (metres).
     """
     pts, gi = gripper_points(pose, width, gripper, spacing)
-    d, _ = object_sdf(obj, pts, qpos, max_dist=0.02)
+    d, _ = object_sdf(obj, pts, qpos, max_dist=0.02, sort=False)
     out = np.full(len(width), np.inf)
     np.minimum.at(out, gi, d)
     return out

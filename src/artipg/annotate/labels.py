@@ -24,18 +24,19 @@ import numpy as np
 from artipg.annotate.knowledge import knowledge
 from artipg.vocabulary import ACTIONABLE_CLASSES, AFFORDANCES
 
-#: Affordances every part of an actionable class must carry as a non-empty region.
-REQUIRED_AFFORDANCES: dict[str, tuple[str, ...]] = {
+#: Affordance regions every part of an actionable class must carry: each inner tuple
+#: is a requirement met by any one of its affordances.
+REQUIRED_AFFORDANCES: dict[str, tuple[tuple[str, ...], ...]] = {
     "none": (),
-    "line_fixed_handle": ("grasp", "pull"),
-    "round_fixed_handle": ("grasp", "pull"),
-    "slider_button": ("press",),
-    "hinge_door": ("push",),
-    "slider_drawer": ("push",),
-    "slider_lid": ("push",),
-    "hinge_lid": ("lift",),
-    "hinge_knob": ("rotate",),
-    "hinge_handle": ("grasp",),
+    "line_fixed_handle": (("grasp",), ("pull",)),
+    "round_fixed_handle": (("grasp",), ("pull",)),
+    "slider_button": (("press",),),
+    "hinge_door": (("push", "pull"),),
+    "slider_drawer": (("push", "pull"),),
+    "slider_lid": (("pull", "push", "lift"),),
+    "hinge_lid": (("lift", "pull", "push"),),
+    "hinge_knob": (("rotate",),),
+    "hinge_handle": (("grasp",),),
 }
 
 

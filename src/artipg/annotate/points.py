@@ -67,6 +67,15 @@ class PrimitiveTable:
         sem = np.array([label_id(p.semantic) for p in obj.parts], dtype=np.int64)
         return cls(groups, k, sem)
 
+    def part_cell_p(self, parts) -> np.ndarray:
+        """Cell probabilities restricted to the primitives of ``parts`` (instance ids)."""
+        keep = np.isin(np.concatenate([np.repeat(g.part, g.comp_area.shape[1]) for g in self.groups]),
+                       np.asarray(parts, dtype=np.int64))
+        a = np.where(keep, self.cell_areas, 0.0)
+        if a.sum() <= 0:
+            raise ValueError(f"parts {list(parts)} have no surface")
+        return a / a.sum()
+
     def shift_root(self, S: np.ndarray) -> None:
         """Apply object-frame transform ``S`` to every root-link primitive."""
         for g in self.groups:
@@ -127,7 +136,7 @@ class PointCloud:
     link_names: tuple
 
 
-def sample_points(obj, n: int = 2048, seed: int = 0, qpos=None) -> PointCloud:
+def sample_points(obj, n: int = 2048, seed: int = 0, qpos=None, parts=None) -> PointCloud:
     """Sample ``n`` area-uniform labelled surface points of ``obj`` at ``qpos``.
 
     The number of points per primitive is multinomial in its surface area, and within
@@ -142,11 +151,14 @@ def sample_points(obj, n: int = 2048, seed: int = 0, qpos=None) -> PointCloud:
         Seed of the sampling stream (independent of the object's seed).
     qpos : None, dict or sequence
         Joint state (see :meth:`ArticulatedObject.qpos_dict`).
+    parts : sequence of int, optional
+        Sample only the surfaces of these parts (instance ids), area-uniformly.
     """
     rng = np.random.default_rng(seed)
     table = obj.primitive_table
     L = obj.link_poses(qpos)
-    counts = rng.multinomial(n, table.cell_p)
+    cell_p = table.cell_p if parts is None else table.part_cell_p(parts)
+    counts = rng.multinomial(n, cell_p)
     local, normal, idx = [], [], []
     start = 0
     for g in table.groups:

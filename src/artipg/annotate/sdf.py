@@ -50,7 +50,7 @@ def _primitive_params(obj):
 
 
 def object_sdf(obj, x: np.ndarray, qpos=None, max_dist: float = np.inf, parts=None,
-               exclude_parts=None, unsigned: bool = False) -> tuple[np.ndarray, np.ndarray]:
+               exclude_parts=None, unsigned: bool = False, sort: bool = True) -> tuple[np.ndarray, np.ndarray]:
     """Signed distance of points to ``obj`` at ``qpos`` and the nearest primitive.
 
     Parameters
@@ -69,6 +69,9 @@ def object_sdf(obj, x: np.ndarray, qpos=None, max_dist: float = np.inf, parts=No
         Minimise ``|sdf|`` instead: the distance to the nearest primitive *surface*
         (a point on one primitive's face that lies inside an overlapping primitive
         is then attributed to the face it lies on).
+    sort : bool
+        Group the points spatially first (leave False when consecutive points are
+        already close together, e.g. grids on small boxes).
 
     Returns
     -------
@@ -97,7 +100,7 @@ def object_sdf(obj, x: np.ndarray, qpos=None, max_dist: float = np.inf, parts=No
     if not len(kidx):
         return best, arg
     # broad phase: spatially sorted chunks of points against primitive boxes
-    order = _spatial_order(x)
+    order = _spatial_order(x) if sort else np.arange(n)
     xs = x[order]
     nch = (n + _CHUNK - 1) // _CHUNK
     pad = np.concatenate([xs, np.repeat(xs[-1:], nch * _CHUNK - n, axis=0)]).reshape(nch, _CHUNK, 3)

@@ -6,8 +6,8 @@ to ``_MODULES`` below (a test checks every module here is registered).
 
 from __future__ import annotations
 
-from artipg.categories import storage_furniture
+from artipg.categories import storage_furniture, eyeglasses, stapler, bottle, switch, bucket, microwave, faucet, kitchen_pot, kettle
 
-_MODULES = (storage_furniture,)
+_MODULES = (storage_furniture, eyeglasses, stapler, bottle, switch, bucket, microwave, faucet, kitchen_pot, kettle)
 
 REGISTRY = {m.RULE.name: m.RULE for m in _MODULES}

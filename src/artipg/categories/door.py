@@ -23,7 +23,7 @@ from artipg.geometry.transforms import rot_y, rot_z, translation
 from artipg.model.part import Part
 from artipg.rules import Category, Slot
 from artipg.templates.frames import door_frame, glazed_panel, panel_leaf, swing_clearance
-from artipg.templates.handles import FRONT_HANDLES, edge_pull, knob_pull
+from artipg.templates.handles import arch_handle, flat_bar_handle
 from artipg.templates.mounting import free_edge_yz, mount_hinged, mount_sliding
 from artipg.templates.panels import slab_door
 from artipg.templates.turn_handles import DOOR_KNOBS, DOOR_LEVERS, mount_turning, thumb_turn
@@ -32,12 +32,12 @@ from artipg.templates.turn_handles import DOOR_KNOBS, DOOR_LEVERS, mount_turning
 SIZES = {"single_door": ((1, 1), (0.7, 0.95), (1.95, 2.1)), "double_door": ((2, 2), (0.55, 0.9), (1.95, 2.2)),
          "french_door": ((1, 2), (0.6, 0.9), (1.95, 2.1)), "barn_door": ((1, 1), (0.8, 1.1), (1.95, 2.15))}
 HANDLES = {**DOOR_LEVERS, **DOOR_KNOBS}
-PULLS = {k: v for k, v in FRONT_HANDLES.items() if k not in (knob_pull, edge_pull)}
+PULLS = {arch_handle: 1.0, flat_bar_handle: 1.0}  # long barn-door pulls
 
 
 def glazed_leaf(p, width, height, thickness=None):
     """A French-door leaf: wide stiles and rails around a grid of glass lites."""
-    rail = p.uniform("stile_width", 0.08, 0.13)
+    rail = p.uniform("stile_width", 0.1, 0.14)
     return glazed_panel(p, width, height, thickness, "door", rows=p.integers("rows", 1, 5),
                         cols=p.integers("cols", 1, 3 if width > 0.6 else 2), rail=rail)
 
@@ -65,8 +65,8 @@ def frame(ctx):
     return root, dict(n=n, W=W, H=H, t=t, Wo=Wo, ch=ch, under=under)
 
 
-def _leaf(ctx, q, W, H, t):
-    out = ctx.choose("leaf", LEAVES[ctx.sub])(q, W, H, thickness=t)
+def _leaf(tmpl, q, W, H, t):
+    out = tmpl(q, W, H, thickness=t)
     return out if isinstance(out, tuple) else (out, None)
 
 
@@ -77,11 +77,11 @@ def leaves(ctx):
         return _barn(ctx, root, d)
     sides = ("+y", "-y") if d["n"] == 2 else (p.choice("hinge", ("+y", "-y")),)
     lim = p.uniform("limit", 1.45, 1.9)
-    out = []
+    tmpl, out = ctx.choose("leaf", LEAVES[ctx.sub]), []
     for i, side in enumerate(sides):
         s = 1.0 if side == "+y" else -1.0
         cy = s * (d["Wo"] / 2 - d["ch"] - W / 2)
-        leaf, glass = _leaf(ctx, p.scope(f"leaf{i}"), W, H, t)
+        leaf, glass = _leaf(tmpl, p.scope(f"leaf{i}"), W, H, t)
         link = mount_hinged(ctx.builder, root, leaf, front_x=t, center_yz=(cy, d["under"] + H / 2), size_yz=(W, H),
                             side=side, limits=(0.0, lim), name="leaf")
         if glass is not None:
@@ -135,7 +135,7 @@ def _barn(ctx, root, d):
         prims.append(cylinder(0.008, hf - xr, translation((xr + hf) / 2, y, zr - rh / 2) @ rot_y(math.pi / 2),
                               role="spacer"))
     root.add(Part("frame", "barn_rail", prims))
-    leaf, _ = _leaf(ctx, p.scope("leaf0"), W, H, t)
+    leaf, _ = _leaf(ctx.choose("leaf", LEAVES[ctx.sub]), p.scope("leaf0"), W, H, t)
     link = mount_sliding(ctx.builder, root, leaf, origin=translation(xb, 0.0, d["under"] + H / 2),
                          axis=(0.0, s, 0.0), limits=(0.0, travel), name="leaf")
     hw, zc = [], zr + R - zt + H / 2  # wheel centre height in the leaf's frame
@@ -145,7 +145,8 @@ def _barn(ctx, root, d):
                cylinder(R, wt, translation(xr - xb, y, zc) @ rot_y(math.pi / 2), role="wheel")]
     link.add(Part("hinge", "barn_hanger", hw))
     pull = ctx.choose("handle", PULLS)(p.scope("pull"), length=p.uniform("pull_length", 0.2, 0.35))
-    link.add(pull, translation(-t, -s * (W / 2 - 0.08), p.uniform("pull_height", 0.95, 1.1) - d["under"] - H / 2))
+    py = leaf.anchors.get("stile", (0.0, W / 2 - 0.08, 0.0))[1]
+    link.add(pull, translation(-t, -s * py, p.uniform("pull_height", 0.95, 1.1) - d["under"] - H / 2))
     return [(link, leaf, None, s)]
 
 

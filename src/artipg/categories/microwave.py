@@ -17,9 +17,9 @@ from __future__ import annotations
 from artipg.geometry.transforms import translation
 from artipg.rules import Category, Slot
 from artipg.templates.appliance import appliance_housing, control_panel, display, turntable, vent_grille, window_door
-from artipg.templates.controls import (BUTTONS, KNOBS, dial_knob, mount_button, mount_knob, mount_rocker, rect_button,
-                                       rocker_switch)
-from artipg.templates.handles import arch_handle, bar_handle, edge_pull, flat_bar_handle
+from artipg.templates.controls import (BUTTONS, KNOBS, button_bezel, dial_knob, mount_button, mount_knob, mount_rocker,
+                                       rect_button, rocker_switch)
+from artipg.templates.handles import arch_handle, edge_pull, flat_bar_handle
 from artipg.templates.mounting import free_edge_yz, handle_pose, mount_hinged
 from artipg.templates.panels import glass_door
 from artipg.templates.supports import bun_feet
@@ -31,7 +31,7 @@ SIZES = {
     "combo": ((0.45, 0.6), (0.33, 0.45), (0.27, 0.35), (0.2, 0.26), (1, 1), (2, 4)),
     "over_the_range": ((0.74, 0.77), (0.38, 0.43), (0.39, 0.44), (0.17, 0.21), (0, 0), (4, 6)),
 }
-HANDLES = {bar_handle: 2.0, flat_bar_handle: 2.0, arch_handle: 1.0, edge_pull: 1.0}
+HANDLES = {flat_bar_handle: 2.0, arch_handle: 1.5, edge_pull: 1.0}  # bar_handle: posts float (see report)
 
 
 def body(ctx):
@@ -63,7 +63,7 @@ def door(ctx):
     dr = tmpl(p.scope("door"), *size, thickness=t)
     link = mount_hinged(ctx.builder, root, dr, front_x=-D / 2, center_yz=centre, size_yz=size, side="+y",
                         limits=(0.0, p.uniform("open_angle", 1.57, 1.92)))
-    has_handle = ctx.sub == "over_the_range" or p.flag("handle", 0.5)
+    has_handle = ctx.sub == "over_the_range" or p.flag("has_handle", 0.5)
     if has_handle:
         h = ctx.choose("handle", HANDLES)(p.scope("handle"), length=p.uniform("handle_length", 0.5, 0.8) * size[1])
         hy, hz = free_edge_yz("+y", size, p.uniform("handle_margin", 0.025, 0.04))
@@ -83,7 +83,7 @@ def panel(ctx):
     pitch = p.uniform("key_pitch", 0.016, 0.026)
     blocks = [("display", p.uniform("display_height", 0.018, 0.03))] if rows else []
     blocks += [("knob", 2 * R)] * (n_knobs if sub == "knob_panel" else 0)
-    blocks += [("well", (rows + release) * pitch)] if rows + release else []
+    blocks += [("well", (rows + release) * pitch)] if rows else [("release", pitch)] * release
     blocks += [("knob", 2 * R)] * (n_knobs if sub == "combo" else 0)
     blocks += [("rockers", 0.025)] if sub == "over_the_range" else []
     f = min(1.0, (ph - m * (len(blocks) + 1)) / sum(h for _, h in blocks))  # shrink to fit
@@ -106,6 +106,10 @@ def panel(ctx):
             root.add(display(q, 0.75 * pw, h), T)
         elif kind == "knob":
             mount_knob(b, root, knob_t(q, radius=h / 2), T, continuous=spin, limits=(0.0, q.uniform("turn", 4.0, 5.8)))
+        elif kind == "release":  # door-release button in a collar on the plate
+            cap = rect_button(q, width=0.6 * pw, height=0.7 * h)
+            root.add(button_bezel(q, cap), T)
+            mount_button(b, root, cap, T)
         else:
             for j in (-1, 1):
                 sw = rocker_switch(q.scope(f"rocker{j}"), width=0.3 * pw, height=h)
@@ -114,7 +118,7 @@ def panel(ctx):
         return
     cols = p.integers("cols", 2, 4 if pw > 0.11 else 3)
     key = ctx.choose("button", BUTTONS)
-    g = p.uniform("key_gap", 0.003, 0.006)
+    g = p.uniform("key_gap", 0.001, 0.0018)  # keys touch their neighbours and the well (< 2 mm)
     cw, pitch = (well[1] - well[0]) / cols, (well[3] - well[2]) / (rows + release)
     for r in range(rows + release):
         last = release and r == rows
@@ -125,8 +129,9 @@ def panel(ctx):
             reach = t + q.uniform("proud", 0.001, 0.003)
             if last or key is rect_button:
                 cap = rect_button(q, width=(well[1] - well[0] if last else cw) - g, height=pitch - g, reach=reach)
-            else:
-                cap = key(q, radius=(min(cw, pitch) - g) / 2, reach=reach)
+            else:  # round keys leave wide gaps in their cells: give each a collar
+                cap = key(q, radius=(min(cw, pitch) - g) / 2 - 0.003, reach=reach)
+                root.add(button_bezel(q, cap, gap=g / 2), translation(-D / 2, pc[0] + yc, pc[1] + zc))
             mount_button(b, root, cap, translation(-D / 2, pc[0] + yc, pc[1] + zc))
 
 

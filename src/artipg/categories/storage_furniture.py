@@ -12,9 +12,11 @@ wardrobe 0.8-1.8 wide and 1.7-2.2 tall.
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
-from artipg.geometry import cuboid_between
+from artipg.geometry import RectRing, cuboid_between
 from artipg.geometry.transforms import translation
 from artipg.model.part import Part
 from artipg.rules import Category, Slot
@@ -54,6 +56,16 @@ def body(ctx):
     return root, part, pose
 
 
+def _stile(part) -> float:
+    """Width of a framed panel's stile (its frame's side band), or inf for a slab:
+    a handle on a framed door must sit on the stile, not on the recessed centre."""
+    for prim in part.primitives:
+        if prim.geom is RectRing:
+            ox, oy, depth, ix, iy = prim.params
+            return (oy - iy) / 2
+    return math.inf
+
+
 def _split(p, name, total, k, lo=0.6, hi=1.4):
     w = np.array([p.uniform(f"{name}{i}", lo, hi) for i in range(k)])
     return np.concatenate([[0.0], np.cumsum(w / w.sum() * total)])
@@ -83,12 +95,14 @@ def fronts(ctx):
             z0, z1 = zbs[r], zbs[r + 1]
             if r:
                 root.add(Part("shelf", "divider", [cuboid_between((front_x, y0 + (wall / 2 if c else 0), z0 - wall / 2), (hi[0], y1 - (wall / 2 if c < nc - 1 else 0), z0 + wall / 2))]), pose)
-            # outer rectangle of the cell on the front plane (overlay fronts cover the walls)
-            oy0 = y0 - (wall if c == 0 else wall / 2) + gap / 2
-            oy1 = y1 + (wall if c == nc - 1 else wall / 2) - gap / 2
-            oz0 = z0 - (wall if r == 0 else wall / 2) + gap / 2
-            oz1 = z1 + (wall if r == nr - 1 else wall / 2) - gap / 2
-            q = p.scope(f"cell{k}")
+            # outer rectangle of the cell on the front plane: overlay fronts cover the
+            # outer walls and meet their neighbours on the dividers' centre lines
+            oy0 = y0 - (wall if c == 0 else 0.0) + gap / 2
+            oy1 = y1 + (wall if c == nc - 1 else 0.0) - gap / 2
+            oz0 = z0 - (wall if r == 0 else 0.0) + gap / 2
+            oz1 = z1 + (wall if r == nr - 1 else 0.0) - gap / 2
+            cell = f"cell{k}"  # parameter names are unique per cell, so overrides reproduce
+            q = p.scope(cell)
             k += 1
             size = (oy1 - oy0, oz1 - oz0)
             centre = ((oy0 + oy1) / 2, (oz0 + oz1) / 2)
@@ -97,30 +111,38 @@ def fronts(ctx):
             iz0 = z0 + (wall / 2 if r else 0) + 0.003
             iz1 = z1 - (wall / 2 if r < nr - 1 else 0) - 0.003
             if size[1] < 0.45 and q.flag("drawer", p_drawer):
-                tmpl = ctx.choose("drawer", DRAWERS)
+                tmpl = ctx.choose(f"{cell}.drawer_template", DRAWERS)
                 opening = (iy0 - centre[0], iy1 - centre[0], iz0 - centre[1], iz1 - centre[1])
                 dr = tmpl(q, size[0], size[1], D - 0.01, opening=opening)
                 link = mount_sliding(ctx.builder, root, dr, origin=pose @ translation(front_x, *centre),
                                      limits=(0.0, q.uniform("travel", 0.6, 0.85) * (D - 0.01)), name="drawer")
                 if "pull" not in dr.regions:
-                    h = ctx.choose("handle", handles)(q.scope("handle"), length=min(0.5 * size[0], 0.35))
+                    h = ctx.choose(f"{cell}.handle_template", handles)(q.scope("handle"), length=min(0.5 * size[0], 0.35))
                     link.add(h, handle_pose(dr.pose, front_thickness(dr), 0.0, q.uniform("handle_z", 0.0, 0.25) * size[1], True))
                 continue
             if size[1] >= 0.45 and q.flag("shelf", 0.6):
-                root.add(shelf_board(q, iy1 - iy0, D - 0.005, wall), pose @ translation((front_x + hi[0]) / 2, (iy0 + iy1) / 2, (z0 + z1) / 2))
+                # the shelf spans the cell between its walls and rests against the back
+                sy0, sy1 = y0 + (wall / 2 if c else 0.0), y1 - (wall / 2 if c < nc - 1 else 0.0)
+                root.add(shelf_board(q, sy1 - sy0, D - 0.005, wall),
+                         pose @ translation(hi[0] - (D - 0.005) / 2, (sy0 + sy1) / 2, (z0 + z1) / 2))
             double = size[0] > 0.55 and q.flag("double", 0.8)
             sides = ("+y", "-y") if double else (q.choice("hinge", ("+y", "-y")),)
             w = size[0] / len(sides) - (gap / 2 if double else 0.0)
-            tmpl = ctx.choose("door", DOORS)
+            tmpl = ctx.choose(f"{cell}.door_template", DOORS)
             for i, side in enumerate(sides):
                 cy = centre[0] + ((w + gap) / 2 * (1 if side == "+y" else -1) if double else 0.0)
                 door = tmpl(q.scope(f"door{i}"), w, size[1])
+                # a hinge on a divider is shared with the neighbouring front: open only
+                # until this door's handle (<= 6 cm proud, <= 7 cm from the free edge)
+                # would cross into the neighbour's half-space
+                outer = (side == "+y" and c == nc - 1) or (side == "-y" and c == 0)
+                lim = hinge_lim if outer else min(hinge_lim, max(0.3, math.atan2(w - 0.07, 0.06)))
                 link = mount_hinged(ctx.builder, root, door, front_x=front_x, center_yz=(cy, centre[1]),
-                                    size_yz=(w, size[1]), side=side, limits=(0.0, hinge_lim), parent_pose=pose)
+                                    size_yz=(w, size[1]), side=side, limits=(0.0, lim), parent_pose=pose)
                 hl = min(0.4 * size[1], 0.35)
-                ht = ctx.choose("handle", handles)
+                ht = ctx.choose(f"{cell}.handle{i}_template", handles)
                 m = 0.03 if ht is not knob_pull else 0.04
-                hy, hz = free_edge_yz(side, (w, size[1]), m)
+                hy, hz = free_edge_yz(side, (w, size[1]), min(m, _stile(door) / 2))
                 link.add(ht(q.scope(f"handle{i}"), length=hl), handle_pose(door.pose, front_thickness(door), hy, hz, False))
 
 

@@ -14,17 +14,24 @@ import artipg
 from artipg.commands import fail
 
 
-def _generate_one(task: tuple[str, int, str, int, bool]) -> tuple[str, int, str]:
-    """Worker: generate and export one object; returns (category, seed, status)."""
+def _generate_one(task: tuple[str, int, str, int, bool, int, bool, bool]) -> tuple[str, int, str]:
+    """Worker: generate (validated and repaired unless told not to) and export one
+    object; returns (category, seed, status), status "written", "skipped" or
+    "invalid" (written, but no candidate passed validation within the budget)."""
     from artipg.export.folder import export_object
 
-    category, seed, out, n_points, overwrite = task
+    category, seed, out, n_points, overwrite, views, validate, sim = task
     dest = Path(out) / category / str(seed)
     if dest.exists() and not overwrite:
         return category, seed, "skipped"
-    obj = artipg.generate(category, seed)
-    export_object(obj, dest, n_points=n_points, overwrite=overwrite)
-    return category, seed, "written"
+    if validate:
+        from artipg.validate import generate_valid
+
+        obj = generate_valid(category, seed, simulate=sim)
+    else:
+        obj = artipg.generate(category, seed)
+    export_object(obj, dest, n_points=n_points, overwrite=overwrite, views=views)
+    return category, seed, "written" if obj.report.get("ok", True) else "invalid"
 
 
 def _check_out_dir(out: Path) -> None:
@@ -67,9 +74,13 @@ def register(app: typer.Typer) -> None:
         seed: int = typer.Option(0, "--seed", "-s", help="First seed."),
         out: Path = typer.Option(Path("out"), "--out", "-o", help="Output folder."),
         points: int = typer.Option(2048, "--points", help="Labelled points per object in points.npz (0: none)."),
+        views: int = typer.Option(0, "--views", help="Partial views (2048 points each) per object in views.npz."),
         workers: int = typer.Option(1, "--workers", "-j", help="Worker processes."),
         overwrite: bool = typer.Option(False, "--overwrite", help="Rewrite objects that already exist."),
         quiet: bool = typer.Option(False, "--quiet", "-q", help="No progress bar."),
+        validate: bool = typer.Option(True, "--validate/--no-validate",
+                                      help="Check penetration, floating parts and joint sweeps; repair failures."),
+        sim: bool = typer.Option(False, "--sim", help="Also require the pybullet / MuJoCo checks (slower)."),
     ) -> None:
         """Generate objects into OUT/<category>/<seed>/ (re-running resumes)."""
         from artipg.export.folder import clean_stale_tmp
@@ -80,14 +91,16 @@ def register(app: typer.Typer) -> None:
             fail(f"--seed must be >= 0, got {seed}")
         if points < 0:
             fail(f"--points must be >= 0, got {points}")
+        if views < 0:
+            fail(f"--views must be >= 0, got {views}")
         if workers < 1:
             fail(f"--workers must be at least 1, got {workers}")
         cats = resolve_categories(category)
         _check_out_dir(out)
         for c in cats:
             clean_stale_tmp(out / c)
-        tasks = [(c, s, str(out), points, overwrite) for c in cats for s in range(seed, seed + n)]
-        counts = {"written": 0, "skipped": 0}
+        tasks = [(c, s, str(out), points, overwrite, views, validate, sim) for c in cats for s in range(seed, seed + n)]
+        counts = {"written": 0, "skipped": 0, "invalid": 0}
         columns = (TextColumn("{task.description}"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(),
                    TimeRemainingColumn())
         with Progress(*columns, disable=quiet, transient=False) as bar:
@@ -104,4 +117,7 @@ def register(app: typer.Typer) -> None:
             finally:
                 if workers > 1:
                     pool.shutdown(cancel_futures=True)
-        typer.echo(f"{counts['written']} written, {counts['skipped']} already present, in {out}")
+        typer.echo(f"{counts['written'] + counts['invalid']} written, {counts['skipped']} already present, in {out}")
+        if counts["invalid"]:
+            typer.echo(f"{counts['invalid']} failed validation after repair (see 'validation' in their "
+                       "annotation.json)", err=True)

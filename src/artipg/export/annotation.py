@@ -21,12 +21,27 @@ def _r(x, nd=6):
     return x
 
 
-def annotation_dict(obj) -> dict:
-    """Everything about ``obj`` except geometry, as JSON-ready data."""
-    poses = obj.part_poses()
+def annotation_dict(obj, grasps=None) -> dict:
+    """Everything about ``obj`` except geometry, as JSON-ready data.
+
+    Part poses and grasps are given at the rest state in the object frame (see
+    ``docs/annotations.md``); ``grasps`` is a precomputed
+    :class:`artipg.annotate.grasps.WorldGrasps` at rest (computed when None).
+    """
+    from artipg.annotate.grasps import world_grasps
+    from artipg.annotate.labels import part_frames
+
+    frames = part_frames(obj)
+    g = world_grasps(obj) if grasps is None else grasps
+    by_part: dict[int, list] = {}
+    for k in range(len(g)):
+        by_part.setdefault(int(g.part[k]), []).append({
+            "pose": _r(g.pose[k]), "width": _r(g.width[k]), "approach": _r(g.approach[k]),
+            "open_dir": _r(g.open_dir[k]), "joint": obj.joints[g.joint[k]].name if g.joint[k] >= 0 else None,
+            "collision_free": bool(g.collision_free[k]),
+        })
     parts = []
     for i, part in enumerate(obj.parts):
-        canon = poses[i] @ part.canonical
         parts.append({
             "name": part.name,
             "instance": i,
@@ -34,11 +49,12 @@ def annotation_dict(obj) -> dict:
             "semantic": part.semantic,
             "template": part.template,
             "actionable": part.actionable,
-            "pose": _r(canon),
-            "size": _r(part.canonical_size()),
+            "pose": _r(frames.canonical[i]),
+            "size": _r(frames.size[i]),
+            "npcs_pose": _r(frames.pose[i]),
+            "npcs_scale": _r(frames.scale[i]),
             "affordances": sorted(part.regions),
-            "grasps": [{"pose": _r(poses[i] @ g.pose), "width": _r(g.width), "open_dir": _r(poses[i][:3, :3] @ g.open_dir)}
-                       for g in part.grasps],
+            "grasps": by_part.get(i, []),
         })
     joints = [{"name": j.name, "type": j.type, "parent": j.parent, "child": j.child, "origin": _r(j.origin),
                "axis": _r(j.axis), "limits": [None if not np.isfinite(v) else _r(v) for v in j.limits]}
@@ -60,5 +76,5 @@ def annotation_dict(obj) -> dict:
     }
 
 
-def annotation_text(obj) -> str:
-    return json.dumps(annotation_dict(obj), indent=1, sort_keys=False) + "\n"
+def annotation_text(obj, grasps=None) -> str:
+    return json.dumps(annotation_dict(obj, grasps), indent=1, sort_keys=False) + "\n"

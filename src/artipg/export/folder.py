@@ -17,29 +17,31 @@ from artipg.export.urdf import build_urdf, urdf_text
 TMP_PREFIX = ".tmp-"
 
 
-def point_arrays(obj, n_points: int, seed: int = 0) -> dict[str, np.ndarray]:
-    """Arrays stored in ``points.npz`` (see the README's table)."""
-    pc = obj.sample_points(n_points, seed=seed)
-    return {
-        "points": pc.points.astype(np.float32),
-        "normals": pc.normals.astype(np.float32),
-        "semantic": pc.semantic.astype(np.int32),
-        "instance": pc.instance.astype(np.int32),
-        "link": pc.link.astype(np.int32),
-        "semantic_names": np.array(pc.semantic_names),
-        "instance_names": np.array(pc.instance_names),
-        "link_names": np.array(pc.link_names),
-    }
+def point_arrays(obj, n_points: int, seed: int = 0, qpos=None, grasps=True) -> dict[str, np.ndarray]:
+    """Arrays stored in ``points.npz`` (see ``docs/annotations.md``)."""
+    from artipg.annotate.arrays import point_arrays as _arrays
+
+    return _arrays(obj, n_points, seed=seed, qpos=qpos, grasps=grasps)
 
 
-def object_files(obj, n_points: int = 2048) -> dict[str, bytes]:
-    """All files of the object folder as {relative path: bytes}."""
+def object_files(obj, n_points: int = 2048, views: int = 0, view_points: int = 2048) -> dict[str, bytes]:
+    """All files of the object folder as {relative path: bytes}.
+
+    ``views`` > 0 adds ``views.npz`` with that many partial views of ``view_points``
+    points each (rest pose; see ``docs/annotations.md``).
+    """
+    from artipg.annotate.arrays import view_arrays
+    from artipg.annotate.grasps import world_grasps
+
+    grasps = world_grasps(obj)
     robot, meshes = build_urdf(obj)
     files = {"mobility.urdf": urdf_text(robot).encode(), "semantics.txt": semantics_text(obj).encode(),
-             "annotation.json": annotation_text(obj).encode()}
+             "annotation.json": annotation_text(obj, grasps).encode()}
     files.update({k: v.encode() for k, v in meshes.items()})
     if n_points > 0:
-        files["points.npz"] = npz_bytes(point_arrays(obj, n_points))
+        files["points.npz"] = npz_bytes(point_arrays(obj, n_points, grasps=grasps))
+    if views > 0:
+        files["views.npz"] = npz_bytes(view_arrays(obj, views, view_points, seed=obj.seed))
     return files
 
 
@@ -72,9 +74,10 @@ def write_files_atomic(files: dict[str, bytes], dest: Path, overwrite: bool = Fa
     return dest
 
 
-def export_object(obj, dest, n_points: int = 2048, overwrite: bool = False) -> Path:
-    """Write the object folder of ``obj`` at ``dest`` (atomically)."""
-    return write_files_atomic(object_files(obj, n_points), Path(dest), overwrite=overwrite)
+def export_object(obj, dest, n_points: int = 2048, overwrite: bool = False, views: int = 0) -> Path:
+    """Write the object folder of ``obj`` at ``dest`` (atomically); ``views`` > 0 adds
+    ``views.npz`` with that many partial views."""
+    return write_files_atomic(object_files(obj, n_points, views=views), Path(dest), overwrite=overwrite)
 
 
 def clean_stale_tmp(folder: Path) -> int:

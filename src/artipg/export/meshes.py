@@ -2,6 +2,16 @@
 
 OBJ files are written with a fixed number format so that the same object always gives
 the same bytes.
+
+Collision geometry is one element per convex piece of every primitive
+(:meth:`artipg.geometry.GeometryTemplate.collision`): boxes, cylinders and spheres
+as native shapes, hollow solids (rings, tori, frames) as several convex sectors or
+boxes, so that simulators, which treat every collision mesh as its convex hull,
+never fill a hollow body.
+
+Inertials come from the solid geometry and a density per material class
+(:data:`MATERIAL`, :data:`CLASS_DENSITY`): exact formulas for boxes, frames and
+cylinders, mass properties of the primitive's mesh for the other templates.
 """
 
 from __future__ import annotations
@@ -9,10 +19,43 @@ from __future__ import annotations
 import numpy as np
 import trimesh
 
-#: Densities (kg/m^3) per semantic label; the rest use DEFAULT_DENSITY (wood/plastic).
-DENSITY = {"glass": 2500.0, "knob": 1100.0, "button": 1100.0, "handle": 2700.0, "spout": 8000.0,
-           "lever": 8000.0, "hinge": 7800.0, "wheel": 1200.0}
-DEFAULT_DENSITY = 600.0
+from artipg.geometry.box import Cuboid, RectRing
+from artipg.geometry.revolve import Frustum, Sphere
+
+#: Densities (kg/m^3) of the material classes.
+CLASS_DENSITY = {
+    "wood": 600.0,       # chipboard / MDF / solid wood furniture panels
+    "plastic": 1050.0,   # ABS, polypropylene housings, knobs, caps
+    "aluminium": 2700.0,  # handles, frames of small appliances
+    "steel": 7850.0,     # hinges, levers, arms, stapler parts
+    "brass": 8500.0,     # faucet spouts and levers
+    "glass": 2500.0,     # panes, lenses, screens
+    "rubber": 1100.0,    # wheels, pedals, pads
+}
+
+#: Material class of each semantic label; labels not listed are :data:`DEFAULT_CLASS`.
+MATERIAL = {
+    "body": "wood", "base": "wood", "leg": "wood", "door": "wood", "drawer": "wood", "shelf": "wood",
+    "top": "wood", "seat": "wood", "backrest": "wood", "armrest": "wood", "frame": "wood", "sash": "wood",
+    "flap": "wood", "panel": "plastic",
+    "handle": "aluminium", "hinge": "steel", "lever": "brass", "spout": "brass", "nozzle": "brass",
+    "arm": "steel", "magazine": "steel",
+    "lid": "plastic", "knob": "plastic", "button": "plastic", "dial": "plastic", "switch": "plastic",
+    "cap": "plastic", "pump": "plastic", "tray": "plastic", "turntable": "glass", "keyboard": "plastic",
+    "touchpad": "plastic", "temple": "plastic",
+    "glass": "glass", "lens": "glass", "screen": "glass",
+    "wheel": "rubber", "pedal": "rubber",
+}
+DEFAULT_CLASS = "plastic"
+
+#: Density (kg/m^3) per semantic label (derived from :data:`MATERIAL`).
+DENSITY = {label: CLASS_DENSITY[c] for label, c in MATERIAL.items()}
+DEFAULT_DENSITY = CLASS_DENSITY[DEFAULT_CLASS]
+
+
+def density(semantic: str) -> float:
+    """Density (kg/m^3) of a part with semantic label ``semantic``."""
+    return CLASS_DENSITY[MATERIAL.get(semantic, DEFAULT_CLASS)]
 
 
 def obj_text(vertices: np.ndarray, faces: np.ndarray) -> str:
@@ -41,28 +84,63 @@ def link_collision_pieces(link):
     return out
 
 
+def _box_inertia(sx: float, sy: float, sz: float) -> np.ndarray:
+    """Inertia tensor (3, 3) per unit mass of a box about its centre."""
+    return np.diag([sy * sy + sz * sz, sx * sx + sz * sz, sx * sx + sy * sy]) / 12.0
+
+
+def primitive_mass_properties(geom, params, sections: int = 24) -> tuple[float, np.ndarray, np.ndarray]:
+    """Volume (m^3), centre of mass (3,) and inertia per unit mass (3, 3) about the
+    centre of mass, in the primitive's local frame.
+
+    Exact for boxes, rectangular frames, cylinders and full spheres; from the
+    primitive's closed mesh otherwise.
+    """
+    p = tuple(float(v) for v in params)
+    if geom is Cuboid:
+        return p[0] * p[1] * p[2], np.zeros(3), _box_inertia(*p)
+    if geom is RectRing:
+        vol, I = 0.0, np.zeros((3, 3))
+        for size, T in RectRing.pieces(p):
+            v = size[0] * size[1] * size[2]
+            c = T[:3, 3]
+            vol += v
+            I += v * (_box_inertia(*size) + np.dot(c, c) * np.eye(3) - np.outer(c, c))
+        return vol, np.zeros(3), I / max(vol, 1e-18)
+    if geom is Frustum and abs(p[0] - p[1]) < 1e-12:
+        r, h = p[0], p[2]
+        a = (3 * r * r + h * h) / 12.0
+        return np.pi * r * r * h, np.zeros(3), np.diag([a, a, r * r / 2.0])
+    if geom is Sphere and p[1] <= -p[0] and p[2] >= p[0]:
+        R = p[0]
+        return 4.0 / 3.0 * np.pi * R ** 3, np.zeros(3), np.eye(3) * (0.4 * R * R)
+    m = geom.mesh(geom.solid_params(p), sections=sections)
+    vol = abs(float(m.volume))
+    if vol <= 0:
+        return 0.0, np.zeros(3), np.zeros((3, 3))
+    return vol, np.asarray(m.center_mass), np.asarray(m.moment_inertia) / m.mass
+
+
 def link_inertial(link, sections: int = 24) -> tuple[float, np.ndarray, np.ndarray]:
     """Mass (kg), centre of mass (3,) and inertia tensor (3, 3) about it, link frame.
 
-    Each primitive is a solid of its part's material density; overlaps are counted
-    twice, which is a small over-estimate for the few primitives that intersect.
+    Each primitive is a solid of its part's material density (:func:`density`);
+    overlaps are counted twice, which is a small over-estimate for the few
+    primitives that intersect.
     """
     masses, coms, inertias = [], [], []
     for part in link.parts:
-        rho = DENSITY.get(part.semantic, DEFAULT_DENSITY)
+        rho = density(part.semantic)
         for prim in part.primitives:
-            m = prim.geom.mesh(prim.geom.solid_params(prim.params), sections=sections)
-            T = part.pose @ prim.pose
-            vol = abs(m.volume)
+            vol, c, I1 = primitive_mass_properties(prim.geom, prim.params, sections)
             if vol <= 0:
                 continue
+            T = part.pose @ prim.pose
             mass = rho * vol
             R = T[:3, :3]
-            c = R @ m.center_mass + T[:3, 3]
-            inertia = R @ (m.moment_inertia * (mass / m.mass)) @ R.T
             masses.append(mass)
-            coms.append(c)
-            inertias.append(inertia)
+            coms.append(R @ c + T[:3, 3])
+            inertias.append(mass * (R @ I1 @ R.T))
     if not masses:
         return 1e-3, np.zeros(3), np.eye(3) * 1e-6
     M = float(sum(masses))

@@ -24,22 +24,44 @@ def _origin(parent: ET.Element, T: np.ndarray) -> None:
     ET.SubElement(parent, "origin", xyz=_fmt(T[:3, 3]), rpy=_fmt(rpy))
 
 
-def build_urdf(obj, sections: int = 24) -> tuple[ET.Element, dict[str, str]]:
-    """URDF tree and mesh files {relative path: OBJ text} for ``obj``."""
+#: Time constant (s) with which a freely coasting joint slows down: joint damping is
+#: the moving link's inertia about (mass along) the joint axis divided by it, so a
+#: knob and a wardrobe door feel alike instead of one fixed value for both.
+DAMPING_TIME = 0.25
+
+
+def joint_damping(jtype: str, axis: np.ndarray, mass: float, com: np.ndarray, inertia: np.ndarray) -> float:
+    """Viscous damping of a joint (N*s/m or N*m*s/rad) from its child link's mass
+    properties in the joint frame (mass kg, centre of mass (3,), inertia (3, 3) about it)."""
+    a = np.asarray(axis, dtype=float)
+    if jtype == "prismatic":
+        eff = mass
+    else:  # inertia about the joint axis through the joint origin (parallel axis theorem)
+        c = np.asarray(com, dtype=float)
+        eff = float(a @ inertia @ a) + mass * (float(c @ c) - float(a @ c) ** 2)
+    return max(eff / DAMPING_TIME, 1e-6)
+
+
+def build_urdf(obj, sections: int = 24, visuals: bool = True) -> tuple[ET.Element, dict[str, str]]:
+    """URDF tree and mesh files {relative path: OBJ text} for ``obj``.
+
+    ``visuals=False`` leaves out the visual meshes (simulation-only URDFs, faster).
+    """
     files: dict[str, str] = {}
     robot = ET.Element("robot", name=f"{obj.category}_{obj.seed}")
     mj = ET.SubElement(robot, "mujoco")
     ET.SubElement(mj, "compiler", discardvisual="false", fusestatic="false", strippath="false",
                   balanceinertia="true")
+    inertials = {}
     for link in obj.links:
         el = ET.SubElement(robot, "link", name=link.name)
-        mass, com, I = link_inertial(link, sections)
+        mass, com, I = inertials[link.name] = link_inertial(link, sections)
         inertial = ET.SubElement(el, "inertial")
         ET.SubElement(inertial, "origin", xyz=_fmt(com), rpy="0 0 0")
         ET.SubElement(inertial, "mass", value=f"{mass:.9g}")
         ET.SubElement(inertial, "inertia", ixx=f"{I[0, 0]:.9g}", ixy=f"{I[0, 1]:.9g}", ixz=f"{I[0, 2]:.9g}",
                       iyy=f"{I[1, 1]:.9g}", iyz=f"{I[1, 2]:.9g}", izz=f"{I[2, 2]:.9g}")
-        vm = link_visual_mesh(link, sections)
+        vm = link_visual_mesh(link, sections) if visuals else None
         if vm is not None:
             path = f"meshes/{link.name}.obj"
             files[path] = obj_text(vm.vertices, vm.faces)
@@ -71,7 +93,8 @@ def build_urdf(obj, sections: int = 24) -> tuple[ET.Element, dict[str, str]]:
             ET.SubElement(el, "limit", lower=f"{j.limits[0]:.9g}", upper=f"{j.limits[1]:.9g}", effort="100",
                           velocity="1")
         if j.type != "fixed":
-            ET.SubElement(el, "dynamics", damping="1.0", friction="0.0")
+            damping = joint_damping(j.type, j.axis, *inertials[j.child])
+            ET.SubElement(el, "dynamics", damping=f"{damping:.6g}", friction="0.0")
     ET.indent(robot)
     return robot, files
 

@@ -13,7 +13,9 @@ Joints (set them with :func:`mount_knob`, :func:`mount_button`, :func:`mount_roc
 - push buttons: prismatic along +x (into the surface), limits (0, travel). The cap
   stands off the surface by ``travel + clearance``: anchor ``back`` is its back face at
   rest and ``stop`` where that face is when fully pressed, so a flat surface (or the
-  floor of a keypad well) behind the cap is all a caller needs.
+  floor of a keypad well) behind the cap is all it needs to press freely. Every link
+  must touch the object at rest, so surround the cap within 2 mm: put it in a keypad
+  well with tight gaps, or add a :func:`button_bezel` (a collar) to the parent link.
 - rockers: revolute about +z through the origin; the rest pose is tilted by ``-tilt``
   (one side pressed), limits (0, 2 tilt); the stand-off keeps the cap off the surface.
 
@@ -28,7 +30,7 @@ import math
 
 import numpy as np
 
-from artipg.geometry import cuboid, cylinder, frustum, prism
+from artipg.geometry import Cuboid, cuboid, frustum, prism, rect_ring, ring
 from artipg.geometry.transforms import rot_y, rot_z, translation
 from artipg.model.part import Grasp, Part, Region
 
@@ -142,6 +144,28 @@ def round_button(p, radius: float | None = None, reach: float | None = None, tra
 
 
 BUTTONS = {rect_button: 2.0, round_button: 1.0}
+
+
+def button_bezel(p, button: Part, gap: float | None = None) -> Part:
+    """Collar around a push button's cap, for the parent link at the button's mount pose.
+
+    The collar stands from the surface (x = 0) to a little past the cap's back face,
+    ``gap`` (< 2 mm) around the cap, so the button touches it at rest and slides in it.
+    """
+    g = p.uniform("gap", 0.0005, 0.0015, fixed=gap)
+    wall = p.uniform("wall", 0.0015, 0.003)
+    prim = button.primitives[0]
+    back, front = -button.anchors["back"][0], -button.anchors["front"][0]
+    depth = back + p.uniform("cover", 0.2, 0.5) * (front - back)
+    T = translation(-depth / 2, 0, 0)
+    if prim.geom is Cuboid:
+        _, w, h = prim.params
+        ring_ = rect_ring(h + 2 * (g + wall), w + 2 * (g + wall), depth, h + 2 * g, w + 2 * g, T @ _ALONG_X,
+                          role="bezel")
+    else:
+        r = max(prim.params[0], prim.params[1])
+        ring_ = ring(r + g + wall, r + g, depth, pose=T @ _ALONG_X, role="bezel")
+    return Part("panel", "button_bezel", [ring_], anchors={"front": (-depth, 0.0, 0.0)})
 
 
 def rocker_switch(p, width: float | None = None, height: float | None = None) -> Part:

@@ -87,7 +87,8 @@ def _front(p, template, width, height, bridge, depth, rim, rims, edge, temple, k
         prims.append(cuboid_between((-0.0005, s * yh - 0.7 * knuckle_r, zk - kh / 2),
                                     (xh, s * yh + 0.7 * knuckle_r, zk + kh / 2), role="endpiece"))
         prims.append(cylinder(knuckle_r, kh, translation(xh, s * yh, zk), role="hinge"))
-    anchors = {"hinge_+y": (xh, yh, zh), "hinge_-y": (xh, -yh, zh), "fold": (fold, 0.0, 0.0), "lens_+y": (-depth / 2, yc, 0.0),
+    anchors = {"hinge_+y": (xh, yh, zh), "hinge_-y": (xh, -yh, zh), "fold": (fold, 0.0, 0.0),
+               "lens_+y": (-depth / 2, yc, 0.0),
                "lens_-y": (-depth / 2, -yc, 0.0)}
     return Part("frame", template, prims, anchors=anchors, regions={"grasp": Region(("rim", "endpiece"))})
 
@@ -121,8 +122,8 @@ def half_rim_front(p, shape, width, height, bridge, temple, knuckle_r, gap) -> P
                       temple, knuckle_r, gap)
 
     def brows(yc):
-        return [cuboid_between((-d, s * yc - width / 2 - rim, height / 2), (0.0, s * yc + width / 2 + rim, height / 2 + rim),
-                               role="rim") for s in (1, -1)]
+        return [cuboid_between((-d, s * yc - width / 2 - rim, height / 2),
+                               (0.0, s * yc + width / 2 + rim, height / 2 + rim), role="rim") for s in (1, -1)]
     top = temple[0] / 2 + gap + max(0.0025, 0.6 * temple[0])
     return _front(p, "half_rim_front", width, height, bridge, d, rim, brows, lambda z: width / 2 + rim / 2,
                   temple, knuckle_r, gap, zh=height / 2 + rim - top, zb=height / 2 + rim / 2)
@@ -149,8 +150,10 @@ def bar_temple(p, reach: float, height: float, thickness: float, offset: float, 
     he = 0.75 * height
     le = p.uniform("earpiece", 0.025, 0.04)
     ls = reach - le * math.cos(beta) - he / 2 * math.sin(beta)
-    prims = [cuboid_between((0.0, offset - thickness / 2, -height / 2), (ls, offset + thickness / 2, height / 2), role="bar"),
-             cuboid(le, thickness, he, translation(ls, offset, 0) @ rot_y(beta) @ translation(le / 2, 0, 0), role="bar")]
+    ear = translation(ls, offset, 0) @ rot_y(beta) @ translation(le / 2, 0, 0)
+    prims = [cuboid_between((0.0, offset - thickness / 2, -height / 2), (ls, offset + thickness / 2, height / 2),
+                            role="bar"),
+             cuboid(le, thickness, he, ear, role="bar")]
     return _temple("bar_temple", prims, knuckle_r, height)
 
 
@@ -164,7 +167,8 @@ def paddle_temple(p, reach: float, height: float, thickness: float, offset: floa
     y0, y1 = offset - thickness / 2, offset + thickness / 2
     prims = [cuboid_between((0.0, y0, -height / 2), (lp, y1, height / 2), role="bar"),
              cuboid_between((lp - 0.001, y0, -hb / 2), (ls, y1, hb / 2), role="bar"),
-             cuboid(le, thickness, hb, translation(ls, offset, 0) @ rot_y(beta) @ translation(le / 2, 0, 0), role="bar")]
+             cuboid(le, thickness, hb, translation(ls, offset, 0) @ rot_y(beta) @ translation(le / 2, 0, 0),
+                    role="bar")]
     return _temple("paddle_temple", prims, knuckle_r, height)
 
 
@@ -177,7 +181,8 @@ def wire_temple(p, reach: float, height: float, thickness: float, offset: float,
     tail = p.uniform("tail", 0.01, 0.025)
     x0 = lb - 0.002
     ls = reach - x0 - bend * math.sin(turn) - tail * math.cos(turn) - r
-    prims = [cuboid_between((0.0, offset - thickness / 2, -height / 2), (lb, offset + thickness / 2, height / 2), role="bar")]
+    prims = [cuboid_between((0.0, offset - thickness / 2, -height / 2), (lb, offset + thickness / 2, height / 2),
+                            role="bar")]
     prims += tube(r, [line(ls), arc(bend, -turn), line(tail)], 0.0, translation(x0, offset, 0), role="bar")
     return _temple("wire_temple", prims, knuckle_r, height)
 

@@ -31,6 +31,8 @@ def swing_clearance(thickness: float, span: float, margin: float = 0.002) -> flo
 
 
 def _front(t: float, w: float, h: float, role: str) -> tuple[dict, dict]:
+    """Anchors (front, edge mid-points; ``stile`` is added by framed leaves: the middle
+    of the +y stile on the front face) and the push region of a front panel."""
     anchors = {"front": (-t, 0.0, 0.0), "edge_+y": (-t, w / 2, 0.0), "edge_-y": (-t, -w / 2, 0.0),
                "edge_+z": (-t, 0.0, h / 2), "edge_-z": (-t, 0.0, -h / 2)}
     face = np.array([[-t - 1e-4, -w / 2, -h / 2], [-t + 1e-4, w / 2, h / 2]])
@@ -93,7 +95,7 @@ def stop_ring(width: float, height: float, x0: float, depth: float, band: float,
 def panel_leaf(p, width: float, height: float, thickness: float | None = None, semantic: str = "door") -> Part:
     """Panelled (stile and rail) door leaf: a frame with 1-3 x 1-2 recessed panels."""
     t = p.uniform("thickness", 0.035, 0.045, fixed=thickness)
-    rail = p.uniform("stile_width", 0.08, 0.13) * min(1.0, width / 0.7)
+    rail = p.uniform("stile_width", 0.1, 0.14) * min(1.0, width / 0.7)
     rows = p.integers("panel_rows", 1, 3 if height > 1.0 else 1)
     cols = p.integers("panel_cols", 1, 2 if width > 0.5 else 1)
     mid = 0.8 * rail
@@ -110,6 +112,7 @@ def panel_leaf(p, width: float, height: float, thickness: float | None = None, s
         y = -width / 2 + rail + j * pw + (j - 0.5) * mid
         prims.append(cuboid(t, mid, height - 2 * rail, translation(-t / 2, y, 0), role="panel"))
     anchors, regions = _front(t, width, height, "panel")
+    anchors["stile"] = (-t, width / 2 - rail / 2, 0.0)
     return Part(semantic, "panel_leaf", prims, anchors=anchors, regions=regions, actionable="hinge_door")
 
 
@@ -137,6 +140,7 @@ def glazed_panel(p, width: float, height: float, thickness: float | None = None,
     for j in range(1, nc):
         prims.append(cuboid(bt, bar, gh, translation(-t / 2, -gw / 2 + j * gw / nc, 0), role="bar"))
     anchors, regions = _front(t, width, height, "panel")
+    anchors["stile"] = (-t, width / 2 - r / 2, 0.0)
     act = "hinge_door" if semantic == "door" else "none"
     frame = Part(semantic, "glazed_panel", prims, anchors=anchors, regions=regions, actionable=act)
     gt = min(0.3 * t, p.uniform("glass_thickness", 0.004, 0.02))

@@ -163,14 +163,15 @@ def spoke_wheel(p, radius: float | None = None) -> Part:
                 grasps=[_grasp(x, 0.0, 2 * ball + 0.02)], actionable="hinge_handle")
 
 
-def mount_turning(builder, parent, part, pose: np.ndarray, limits, name: str = "handle"):
+def mount_turning(builder, parent, part, pose: np.ndarray, limits, name: str = "handle", axis=None):
     """Attach ``part`` on a revolute joint about the mount frame's x axis.
 
-    The axis sign makes positive values turn a lever's tip downwards (a lever pointing
-    to +y turns about -x), and clockwise (seen from the front) for round handles.
+    By default the axis sign makes positive values turn a lever's tip downwards (a
+    lever pointing to +y turns about -x), and a lever hanging down towards +y; pass
+    ``axis`` (3,) to choose it.
     """
     tip_y = float(part.anchors.get("tip", (0.0, 0.0, 0.0))[1])
     link = builder.create_link(name, parent)
-    link.set_joint("revolute", pose, axis=(-1.0 if tip_y > 0 else 1.0, 0.0, 0.0), limits=limits)
+    link.set_joint("revolute", pose, axis=axis or (-1.0 if tip_y > 0 else 1.0, 0.0, 0.0), limits=limits)
     link.add(part)
     return link

@@ -20,10 +20,8 @@ from __future__ import annotations
 from dataclasses import asdict, dataclass
 
 import numpy as np
-from scipy.sparse import coo_matrix
-from scipy.sparse.csgraph import connected_components
 
-from artipg.validate.contacts import deepest_point, evaluate, overlapping, pair_jobs, world_boxes
+from artipg.validate.contacts import deepest_point, overlapping, pair_distance, world_boxes
 from artipg.validate.kinematics import Kinematics, motion, rigid_inverse
 from artipg.validate.report import CheckResult, Issue
 from artipg.validate.shapes import Pieces
@@ -48,47 +46,19 @@ class Tolerances:
     penetration: float = 1e-3
     floating: float = 2e-3
     sweep_poses: int = 16
-    open_fractions: tuple = (0.5, 1.0)
+    open_fractions: tuple = (1.0,)
 
     def to_json(self) -> dict:
         return {k: list(v) if isinstance(v, tuple) else v for k, v in asdict(self).items()}
 
 
-_REST, _SWEEP, _OPEN = 0, 1, 2
 #: Boxes must overlap by this much on every axis before a pair is checked for
 #: penetration (metres): touching faces are skipped, real overlaps are not.
 _OVERLAP = 1e-4
 
 
-class _Jobs:
-    """Accumulates distance jobs with their scene bookkeeping."""
-
-    def __init__(self):
-        self.cols = {k: [] for k in ("src", "tgt", "rel", "margin", "kind", "scene", "pair")}
-
-    def add(self, src, tgt, rel, margin, kind, scene, pair):
-        n = len(src)
-        c = self.cols
-        c["src"].append(src)
-        c["tgt"].append(tgt)
-        c["rel"].append(rel)
-        c["margin"].append(np.full(n, margin))
-        c["kind"].append(np.full(n, kind, dtype=np.int64))
-        c["scene"].append(np.broadcast_to(np.asarray(scene, dtype=np.int64), (n,)))
-        c["pair"].append(np.asarray(pair, dtype=np.int64))
-
-    def arrays(self) -> dict:
-        out = {}
-        for k, v in self.cols.items():
-            if v:
-                out[k] = np.concatenate(v)
-            else:
-                out[k] = np.zeros((0, 4, 4)) if k == "rel" else np.zeros(0, dtype=np.int64)
-        return out
-
-
 def run_checks(kin: Kinematics, pieces: Pieces, tol: Tolerances = Tolerances()) -> dict[str, CheckResult]:
-    """Run penetration, floating and joint-sweep checks.
+    """Run the penetration, floating and joint-sweep checks.
 
     Parameters
     ----------
@@ -104,96 +74,101 @@ def run_checks(kin: Kinematics, pieces: Pieces, tol: Tolerances = Tolerances()) 
     rest = kin.poses()
     W0 = rest[pieces.link] @ pieces.T
     c0, h0 = world_boxes(pieces, W0)
-    jobs = _Jobs()
-
-    # ---------------------------------------------------------------- rest scene
-    M = pieces.n
-    a, b = np.triu_indices(M, 1)
-    ov = overlapping(c0, h0, c0, h0, tol.floating)[a, b] & (pieces.part[a] != pieces.part[b])
-    ra, rb = a[ov], b[ov]
-    rel_ab, rel_ba = pair_jobs(W0[ra], W0[rb])
-    pid = np.arange(len(ra))
-    jobs.add(ra, rb, rel_ab, tol.floating, _REST, 0, pid)
-    jobs.add(rb, ra, rel_ba, tol.floating, _REST, 0, pid)
-
-    # ---------------------------------------------------------------- sweeps
+    scenes = [_rest_pairs(pieces, c0, h0, tol), _sweep_pairs(kin, pieces, rest, W0, c0, h0, tol)]
     movable = kin.movable()
-    sweep_meta = _sweep_jobs(kin, pieces, rest, W0, c0, h0, movable, tol, jobs)
-
-    # ---------------------------------------------------------------- all open
-    open_meta = []
     if len(movable) >= 2:
-        for s, frac in enumerate(tol.open_fractions):
-            open_meta.append(_open_jobs(kin, pieces, rest, frac, s, jobs))
-
-    J = jobs.arrays()
-    d = evaluate(pieces, J["src"], J["tgt"], J["rel"], J["margin"])
-
-    rest_sel = J["kind"] == _REST
-    D = np.full(len(ra), np.inf)
-    np.minimum.at(D, J["pair"][rest_sel], d[rest_sel])
-    out = {
-        "penetration": _penetration(kin, pieces, W0, ra, rb, D, tol),
-        "floating": _floating(kin, pieces, W0, ra, rb, D, tol),
+        scenes += [_open_pairs(kin, pieces, rest, f) for f in tol.open_fractions]
+    a = np.concatenate([s["a"] for s in scenes])
+    b = np.concatenate([s["b"] for s in scenes])
+    Wa = np.concatenate([s["Wa"] if s["Wa"] is not None else W0[s["a"]] for s in scenes])
+    Wb = np.concatenate([s["Wb"] if s["Wb"] is not None else W0[s["b"]] for s in scenes])
+    margin = np.concatenate([np.full(len(s["a"]), s["margin"]) for s in scenes])
+    d = pair_distance(pieces, a, b, Wa, Wb, margin)
+    k = 0
+    for s in scenes:
+        n = len(s["a"])
+        s["d"] = d[k:k + n]
+        s["Wa"], s["Wb"] = Wa[k:k + n], Wb[k:k + n]
+        k += n
+    rest_s = scenes[0]
+    return {
+        "penetration": _penetration(kin, pieces, rest_s, tol),
+        "floating": _floating(kin, pieces, W0, rest_s, tol),
+        "joint_sweep": _sweep_result(kin, pieces, scenes[1], scenes[2:], tol),
     }
-    out["joint_sweep"] = _sweep_result(kin, pieces, J, d, sweep_meta, open_meta, tol)
+
+
+# -------------------------------------------------------------------- pair building
+
+def _rest_pairs(pieces, c0, h0, tol) -> dict:
+    """Pieces of different parts within the floating tolerance of each other at rest."""
+    a, b = np.triu_indices(pieces.n, 1)
+    ov = overlapping(c0, h0, c0, h0, tol.floating)[a, b] & (pieces.part[a] != pieces.part[b])
+    return {"a": a[ov], "b": b[ov], "Wa": None, "Wb": None, "margin": tol.floating}
+
+
+def _sweep_pairs(kin, pieces, rest, W0, c0, h0, tol) -> dict:
+    """Each movable joint at ``tol.sweep_poses`` values: moving pieces against the
+    pieces that stay at rest, culled first by swept then by per-pose boxes."""
+    movable = kin.movable()
+    empty = np.zeros(0, dtype=np.int64)
+    out = {"a": empty, "b": empty, "Wa": np.zeros((0, 4, 4)), "Wb": np.zeros((0, 4, 4)), "margin": 0.0,
+           "scene": empty, "joint": empty, "q": np.zeros(0), "movable": movable}
+    if not len(movable) or pieces.n == 0:
+        return out
+    moving = kin.descendants[movable][:, pieces.link]  # (J, M)
+    values = [kin.sweep_values(i, tol.sweep_poses) for i in movable]
+    scene_joint = np.repeat(np.arange(len(movable)), [len(v) for v in values])
+    scene_q = np.concatenate(values)
+    link = movable[scene_joint]
+    A = rest[link]
+    types = np.array(kin.joint_types, dtype=object)[link].astype(str)
+    G = A @ motion(types, kin.axis[link], scene_q) @ rigid_inverse(A)
+    out["joint"], out["q"] = scene_joint, scene_q
+    s_idx, p_idx = np.nonzero(moving[scene_joint])  # (scene, moving piece) rows
+    if not len(s_idx):
+        return out
+    Wm = G[s_idx] @ W0[p_idx]
+    cm, hm = world_boxes(pieces, Wm, p_idx)
+    # swept box of each (joint, moving piece) over all its poses
+    key = scene_joint[s_idx] * pieces.n + p_idx
+    ukey, inv = np.unique(key, return_inverse=True)
+    lo = np.full((len(ukey), 3), np.inf)
+    hi = np.full((len(ukey), 3), -np.inf)
+    np.minimum.at(lo, inv, cm - hm)
+    np.maximum.at(hi, inv, cm + hm)
+    cand = overlapping(0.5 * (lo + hi), 0.5 * (hi - lo), c0, h0, -_OVERLAP) & ~moving[ukey // pieces.n]
+    u, b = np.nonzero(cand)
+    if not len(u):
+        return out
+    # expand the candidates over the poses of their joint and test per-pose boxes
+    order = np.argsort(inv, kind="stable")
+    starts = np.searchsorted(inv[order], np.arange(len(ukey)))
+    counts = np.bincount(inv, minlength=len(ukey))
+    n_rep = counts[u]
+    rows = order[np.repeat(starts[u], n_rep) + (np.arange(n_rep.sum()) - np.repeat(np.cumsum(n_rep) - n_rep, n_rep))]
+    bb = np.repeat(b, n_rep)
+    ok = (np.abs(cm[rows] - c0[bb]) - (hm[rows] + h0[bb]) < -_OVERLAP).all(axis=1)
+    rows, bb = rows[ok], bb[ok]
+    out.update(a=p_idx[rows], b=bb, Wa=Wm[rows], Wb=W0[bb], scene=s_idx[rows])
     return out
 
 
-# -------------------------------------------------------------------- job building
-
-def _sweep_jobs(kin, pieces, rest, W0, c0, h0, movable, tol, jobs):
-    """Jobs for every movable joint at ``tol.sweep_poses`` values; returns scene info."""
-    M = pieces.n
-    if not len(movable) or M == 0:
-        return None
-    G, scene_joint, scene_q = [], [], []
-    moving = np.zeros((len(movable), M), dtype=bool)
-    for k, i in enumerate(movable):
-        moving[k] = kin.subtree(i)[pieces.link]
-        v = kin.sweep_values(i, tol.sweep_poses)
-        A = rest[i]
-        G.append(A @ motion(kin.joint_types[i], kin.axis[i], v) @ rigid_inverse(A))
-        scene_joint.append(np.full(len(v), k))
-        scene_q.append(v)
-    G = np.concatenate(G)
-    scene_joint = np.concatenate(scene_joint)
-    scene_q = np.concatenate(scene_q)
-    s_idx, p_idx = np.nonzero(moving[scene_joint])  # (scene, moving piece) rows
-    Wm = G[s_idx] @ W0[p_idx]
-    cm, hm = world_boxes(pieces, Wm, p_idx)
-    ov = overlapping(cm, hm, c0, h0, -_OVERLAP) & ~moving[scene_joint[s_idx]]
-    r, b = np.nonzero(ov)
-    if len(r):
-        a = p_idx[r]
-        rel_ab, rel_ba = pair_jobs(Wm[r], W0[b])
-        scene = s_idx[r]
-        pid = np.arange(len(r))
-        jobs.add(a, b, rel_ab, 0.0, _SWEEP, scene, pid)
-        jobs.add(b, a, rel_ba, 0.0, _SWEEP, scene, pid)
-    return {"joint": scene_joint, "q": scene_q, "movable": movable, "a": p_idx[r], "b": b,
-            "scene": s_idx[r], "Wa": Wm[r]}
-
-
-def _open_jobs(kin, pieces, rest, frac, s, jobs):
+def _open_pairs(kin, pieces, rest, frac) -> dict:
+    """All joints at ``frac`` of their ranges: pairs of pieces on links whose relative
+    pose differs from rest."""
     P = kin.poses(kin.open_values(frac))
     W = P[pieces.link] @ pieces.T
     c, h = world_boxes(pieces, W)
-    # link pairs whose relative pose differs from rest (others were checked at rest)
-    rel_rest = rigid_inverse(rest)[:, None] @ rest[None]
-    rel_open = rigid_inverse(P)[:, None] @ P[None]
-    changed = ~np.isclose(rel_rest, rel_open, atol=1e-9).all(axis=(2, 3))
+    # links moved by the same rigid motion keep their relative pose (checked at rest)
+    G = np.round((P @ rigid_inverse(rest))[:, :3].reshape(len(P), 12), 9)
+    group = np.unique(G, axis=0, return_inverse=True)[1].ravel()[pieces.link]
     a, b = np.triu_indices(pieces.n, 1)
-    la, lb = pieces.link[a], pieces.link[b]
-    keep = (la != lb) & changed[la, lb]
+    keep = group[a] != group[b]
     a, b = a[keep], b[keep]
-    ov = overlapping(c[a], h[a], c[b], h[b], -_OVERLAP)[np.arange(len(a)), np.arange(len(a))] if len(a) else a
-    a, b = a[ov], b[ov] if len(a) else (a, b)
-    rel_ab, rel_ba = pair_jobs(W[a], W[b])
-    pid = np.arange(len(a))
-    jobs.add(a, b, rel_ab, 0.0, _OPEN, s, pid)
-    jobs.add(b, a, rel_ba, 0.0, _OPEN, s, pid)
-    return {"frac": frac, "a": a, "b": b, "W": W, "q": kin.open_values(frac)}
+    ov = (np.abs(c[a] - c[b]) - (h[a] + h[b]) < -_OVERLAP).all(axis=1)
+    a, b = a[ov], b[ov]
+    return {"a": a, "b": b, "Wa": W[a], "Wb": W[b], "margin": 0.0, "frac": frac}
 
 
 # -------------------------------------------------------------------- results
@@ -215,49 +190,67 @@ def _worst_per_group(keys: np.ndarray, values: np.ndarray):
     return order[first]
 
 
-def _penetration(kin, pieces, W0, ra, rb, D, tol) -> CheckResult:
-    cross = pieces.link[ra] != pieces.link[rb]
+def _penetration(kin, pieces, s, tol) -> CheckResult:
+    a, b, D = s["a"], s["b"], s["d"]
+    cross = pieces.link[a] != pieces.link[b]
     bad = np.flatnonzero(cross & (D < -tol.penetration))
     issues = []
     if len(bad):
-        parts = np.sort(np.column_stack([pieces.part[ra[bad]], pieces.part[rb[bad]]]), axis=1)
+        parts = np.sort(np.column_stack([pieces.part[a[bad]], pieces.part[b[bad]]]), axis=1)
         for w in bad[_worst_per_group(parts, D[bad])]:
-            a, b = ra[w], rb[w]
-            rel_ab, rel_ba = pair_jobs(W0[a][None], W0[b][None])
-            pa, da = deepest_point(pieces, a, b, rel_ab[0], W0[a])
-            pb, db = deepest_point(pieces, b, a, rel_ba[0], W0[b])
-            links, names = _names(pieces, kin, a, b)
-            issues.append(Issue("penetration", "penetration", -float(D[w]), links, names,
-                                point=list(pa if da <= db else pb)))
+            links, names = _names(pieces, kin, a[w], b[w])
+            pt = deepest_point(pieces, a[w], b[w], s["Wa"][w], s["Wb"][w])
+            issues.append(Issue("penetration", "penetration", -float(D[w]), links, names, point=list(pt)))
     issues.sort(key=lambda i: -i.amount)
-    worst = max([0.0] + [float(-x) for x in D[cross]]) if cross.any() else 0.0
+    worst = max(0.0, float(-D[cross].min())) if cross.any() else 0.0
     return CheckResult("penetration", not issues, worst, issues)
 
 
 def _components(n: int, i: np.ndarray, j: np.ndarray) -> np.ndarray:
-    g = coo_matrix((np.ones(len(i)), (i, j)), shape=(n, n))
-    return connected_components(g, directed=False)[1]
+    """Connected-component label (n,) of every node of the undirected edges (i, j):
+    the smallest node index of its component (min-label propagation)."""
+    lab = np.arange(n)
+    if not len(i):
+        return lab
+    while True:
+        m = np.minimum(lab[i], lab[j])
+        new = lab.copy()
+        np.minimum.at(new, i, m)
+        np.minimum.at(new, j, m)
+        new = new[new]  # pointer jumping
+        if np.array_equal(new, lab):
+            return lab
+        lab = new
 
 
 def _gap(pieces, W0, src_mask, tgt_mask) -> float:
-    """Exact smallest distance (metres) between two sets of pieces at rest."""
+    """Smallest distance (metres) between two sets of pieces at rest."""
     a, b = np.flatnonzero(src_mask), np.flatnonzero(tgt_mask)
     if not len(a) or not len(b):
         return float("inf")
     A, B = np.repeat(a, len(b)), np.tile(b, len(a))
-    rel_ab, rel_ba = pair_jobs(W0[A], W0[B])
-    d = evaluate(pieces, np.concatenate([A, B]), np.concatenate([B, A]), np.concatenate([rel_ab, rel_ba]), np.inf)
-    return float(max(d.min(), 0.0))
+    # box-distance lower bounds: evaluate the most promising pairs, then only the
+    # pairs that could still beat the best distance found
+    c, h = world_boxes(pieces, W0)
+    lb = np.sqrt((np.maximum(np.abs(c[A] - c[B]) - h[A] - h[B], 0.0) ** 2).sum(axis=1))
+    order = np.argsort(lb, kind="stable")
+    first = order[:8]
+    best = float(pair_distance(pieces, A[first], B[first], W0[A[first]], W0[B[first]], np.inf).min())
+    rest = order[8:][lb[order[8:]] < best]
+    if len(rest):
+        best = min(best, float(pair_distance(pieces, A[rest], B[rest], W0[A[rest]], W0[B[rest]], np.inf).min()))
+    return max(best, 0.0)
 
 
-def _floating(kin, pieces, W0, ra, rb, D, tol) -> CheckResult:
+def _floating(kin, pieces, W0, s, tol) -> CheckResult:
+    a, b, D = s["a"], s["b"], s["d"]
     issues = []
     touch = D <= tol.floating
     L = kin.n_links
     has_geom = np.bincount(pieces.link, minlength=L) > 0
-    # links: one connected contact graph containing the root (or the first link with geometry)
-    cross = touch & (pieces.link[ra] != pieces.link[rb])
-    comp = _components(L, pieces.link[ra[cross]], pieces.link[rb[cross]])
+    # links: one contact graph holding the root (or the first link with geometry)
+    cross = touch & (pieces.link[a] != pieces.link[b])
+    comp = _components(L, pieces.link[a[cross]], pieces.link[b[cross]])
     geo = np.flatnonzero(has_geom)
     if len(geo):
         main = comp[geo[0]]
@@ -266,15 +259,15 @@ def _floating(kin, pieces, W0, ra, rb, D, tol) -> CheckResult:
                 continue
             links = np.flatnonzero((comp == c) & has_geom)
             gap = _gap(pieces, W0, np.isin(pieces.link, links), comp[pieces.link] == main)
-            parents = {kin.names[kin.parent[i]] for i in links if kin.parent[i] >= 0}
+            parents = sorted({kin.names[kin.parent[i]] for i in links if kin.parent[i] >= 0})
             issues.append(Issue("floating", "floating_link", gap, [kin.names[i] for i in links], [],
-                                detail="not touching the rest of the object (parent: " + ", ".join(sorted(parents)) + ")"))
-    # parts: the parts of each link form one connected contact graph
+                                detail="does not touch the rest of the object (parent: " + ", ".join(parents) + ")"))
+    # parts: the parts of each link form one contact graph
     P = len(pieces.part_names)
-    same = touch & (pieces.link[ra] == pieces.link[rb])
-    pcomp = _components(P, pieces.part[ra[same]], pieces.part[rb[same]])
+    same = touch & (pieces.link[a] == pieces.link[b])
+    pcomp = _components(P, pieces.part[a[same]], pieces.part[b[same]])
     has_piece = np.bincount(pieces.part, minlength=P) > 0
-    weight = np.bincount(pieces.part, weights=pieces.counts.astype(float), minlength=P)
+    weight = np.bincount(pieces.part, weights=np.prod(2 * pieces.half, axis=1), minlength=P)
     for li in range(L):
         parts = np.flatnonzero((pieces.part_link == li) & has_piece)
         cs = np.unique(pcomp[parts])
@@ -286,50 +279,42 @@ def _floating(kin, pieces, W0, ra, rb, D, tol) -> CheckResult:
             if c == main:
                 continue
             group = parts[pcomp[parts] == c]
-            rest_parts = parts[pcomp[parts] != c]
-            gap = _gap(pieces, W0, np.isin(pieces.part, group), np.isin(pieces.part, rest_parts))
+            others = parts[pcomp[parts] != c]
+            gap = _gap(pieces, W0, np.isin(pieces.part, group), np.isin(pieces.part, others))
             issues.append(Issue("floating", "floating_part", gap, [kin.names[li]],
-                                [pieces.part_names[p] for p in group], detail="not touching the other parts of its link"))
+                                [pieces.part_names[p] for p in group], detail="does not touch the other parts of its link"))
     issues.sort(key=lambda i: -i.amount)
     worst = max([0.0] + [i.amount for i in issues])
     return CheckResult("floating", not issues, worst, issues)
 
 
-def _sweep_result(kin, pieces, J, d, sweep_meta, open_meta, tol) -> CheckResult:
+def _sweep_result(kin, pieces, sw, opens, tol) -> CheckResult:
     issues = []
-    worst = 0.0
-    info = {"joints": 0, "poses": 0}
-    sel = J["kind"] == _SWEEP
-    if sweep_meta is not None:
-        info["joints"] = int(len(sweep_meta["movable"]))
-        info["poses"] = int(len(sweep_meta["q"]))
-        Dp = np.full(len(sweep_meta["a"]), np.inf)
-        np.minimum.at(Dp, J["pair"][sel], d[sel])
-        if len(Dp):
-            worst = max(worst, float(-Dp.min()))
-        bad = np.flatnonzero(Dp < -tol.penetration)
+    D = sw["d"]
+    worst = max(0.0, float(-D.min())) if len(D) else 0.0
+    info = {"joints": int(len(sw["movable"])), "poses": int(len(sw["q"])), "open_poses": len(opens)}
+    bad = np.flatnonzero(D < -tol.penetration)
+    if len(bad):
+        joint = sw["joint"][sw["scene"][bad]]
+        keys = np.column_stack([joint, pieces.link[sw["a"][bad]], pieces.link[sw["b"][bad]]])
+        for w in bad[_worst_per_group(keys, D[bad])]:
+            sc = sw["scene"][w]
+            i = sw["movable"][sw["joint"][sc]]
+            links, names = _names(pieces, kin, sw["a"][w], sw["b"][w])
+            pt = deepest_point(pieces, sw["a"][w], sw["b"][w], sw["Wa"][w], sw["Wb"][w])
+            issues.append(Issue("joint_sweep", "sweep_penetration", -float(D[w]), links, names,
+                                joint=kin.joint_names[i], q=float(sw["q"][sc]), point=list(pt)))
+    for s in opens:
+        D = s["d"]
+        if len(D):
+            worst = max(worst, float(-D.min()))
+        bad = np.flatnonzero(D < -tol.penetration)
         if len(bad):
-            a, b = sweep_meta["a"][bad], sweep_meta["b"][bad]
-            joint = sweep_meta["joint"][sweep_meta["scene"][bad]]
-            keys = np.column_stack([joint, pieces.link[a], pieces.link[b]])
-            for w in bad[_worst_per_group(keys, Dp[bad])]:
-                a, b, s = sweep_meta["a"][w], sweep_meta["b"][w], sweep_meta["scene"][w]
-                i = sweep_meta["movable"][sweep_meta["joint"][s]]
-                links, names = _names(pieces, kin, a, b)
-                issues.append(Issue("joint_sweep", "sweep_penetration", -float(Dp[w]), links, names,
-                                    joint=kin.joint_names[i], q=float(sweep_meta["q"][s])))
-    for s, meta in enumerate(open_meta):
-        m = (J["kind"] == _OPEN) & (J["scene"] == s)
-        Do = np.full(len(meta["a"]), np.inf)
-        np.minimum.at(Do, J["pair"][m], d[m])
-        if len(Do):
-            worst = max(worst, float(-Do.min()))
-        bad = np.flatnonzero(Do < -tol.penetration)
-        if len(bad):
-            keys = np.column_stack([pieces.link[meta["a"][bad]], pieces.link[meta["b"][bad]]])
-            for w in bad[_worst_per_group(keys, Do[bad])]:
-                links, names = _names(pieces, kin, meta["a"][w], meta["b"][w])
-                issues.append(Issue("joint_sweep", "open_penetration", -float(Do[w]), links, names,
-                                    q=float(meta["frac"]), detail=f"all joints at {meta['frac']:g} of their range"))
+            keys = np.column_stack([pieces.link[s["a"][bad]], pieces.link[s["b"][bad]]])
+            for w in bad[_worst_per_group(keys, D[bad])]:
+                links, names = _names(pieces, kin, s["a"][w], s["b"][w])
+                pt = deepest_point(pieces, s["a"][w], s["b"][w], s["Wa"][w], s["Wb"][w])
+                issues.append(Issue("joint_sweep", "open_penetration", -float(D[w]), links, names, q=float(s["frac"]),
+                                    point=list(pt), detail=f"all joints at {s['frac']:g} of their range"))
     issues.sort(key=lambda i: -i.amount)
-    return CheckResult("joint_sweep", not issues, max(worst, 0.0), issues, info)
+    return CheckResult("joint_sweep", not issues, worst, issues, info)

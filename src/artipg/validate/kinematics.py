@@ -8,7 +8,9 @@ child-frame points into the parent (object) frame, metres and radians.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 
@@ -81,17 +83,23 @@ class Kinematics:
             Ti = T[self.parent[i]] @ self.origin[i]
             v = q.get(self.joint_names[i], 0.0)
             if v and self.joint_types[i] in MOVABLE:
-                Ti = Ti @ motion(self.joint_types[i], self.axis[i], np.array([v]))[0]
+                Ti = Ti @ _motion1(self.joint_types[i], self.axis[i], float(v))
             T[i] = Ti
         return T
 
     def subtree(self, i: int) -> np.ndarray:
         """Boolean mask (L,) of link ``i`` and its descendants."""
-        m = np.zeros(self.n_links, dtype=bool)
-        m[i] = True
-        for k in range(i + 1, self.n_links):  # topological order: parents come first
-            if self.parent[k] >= 0 and m[self.parent[k]]:
-                m[k] = True
+        return self.descendants[i]
+
+    @cached_property
+    def descendants(self) -> np.ndarray:
+        """Boolean (L, L): ``[i, k]`` is True when link ``k`` is ``i`` or below it."""
+        L = self.n_links
+        m = np.eye(L, dtype=bool)
+        for k in range(1, L):  # topological order: a parent's row is final before its children
+            p = self.parent[k]
+            if p >= 0:
+                m[:, k] |= m[:, p]
         return m
 
     def sweep_values(self, i: int, n: int = 16) -> np.ndarray:
@@ -119,15 +127,21 @@ class Kinematics:
         return q
 
 
-def motion(jtype: str, axis: np.ndarray, q: np.ndarray) -> np.ndarray:
-    """Joint motions (K, 4, 4) for values ``q`` (K,) about / along unit ``axis`` (3,)."""
+def motion(jtype, axis: np.ndarray, q: np.ndarray) -> np.ndarray:
+    """Joint motions (K, 4, 4) for values ``q`` (K,).
+
+    ``jtype`` is one joint type for all rows or a sequence of K types; ``axis`` is a
+    unit axis (3,) or one per row (K, 3).
+    """
+    q = np.asarray(q, dtype=float)
     K = len(q)
-    T = np.tile(np.eye(4), (K, 1, 1))
-    if jtype == "prismatic":
-        T[:, :3, 3] = q[:, None] * axis[None]
-        return T
-    x, y, z = axis
-    c, s = np.cos(q), np.sin(q)
+    axis = np.broadcast_to(np.asarray(axis, dtype=float), (K, 3))
+    slide = np.broadcast_to(np.asarray(jtype) == "prismatic", (K,))
+    T = np.zeros((K, 4, 4))
+    T[:, 3, 3] = 1.0
+    x, y, z = axis[:, 0], axis[:, 1], axis[:, 2]
+    a = np.where(slide, 0.0, q)
+    c, s = np.cos(a), np.sin(a)
     C = 1.0 - c
     T[:, 0, 0] = c + x * x * C
     T[:, 0, 1] = x * y * C - z * s
@@ -138,6 +152,22 @@ def motion(jtype: str, axis: np.ndarray, q: np.ndarray) -> np.ndarray:
     T[:, 2, 0] = z * x * C - y * s
     T[:, 2, 1] = z * y * C + x * s
     T[:, 2, 2] = c + z * z * C
+    T[:, :3, 3] = np.where(slide, q, 0.0)[:, None] * axis
+    return T
+
+
+def _motion1(jtype: str, axis: np.ndarray, q: float) -> np.ndarray:
+    """One joint motion (4, 4) (scalar fast path of :func:`motion`)."""
+    T = np.eye(4)
+    if jtype == "prismatic":
+        T[:3, 3] = q * axis
+        return T
+    x, y, z = float(axis[0]), float(axis[1]), float(axis[2])
+    c, s = math.cos(q), math.sin(q)
+    C = 1.0 - c
+    T[:3, :3] = ((c + x * x * C, x * y * C - z * s, x * z * C + y * s),
+                 (y * x * C + z * s, c + y * y * C, y * z * C - x * s),
+                 (z * x * C - y * s, z * y * C + x * s, c + z * z * C))
     return T
 
 

@@ -55,6 +55,11 @@ class Issue:
         The joint value at which the fault is worst.
     point : list of float or None
         Where (object frame, metres), for penetrations.
+    detail : str
+        A short human-readable explanation.
+    params : list of str
+        Recorded parameters that built the parts at fault (artipg objects only):
+        what repair perturbs first.
     """
 
     check: str
@@ -66,9 +71,12 @@ class Issue:
     q: float | None = None
     point: list | None = None
     detail: str = ""
+    params: list = field(default_factory=list)
 
     def to_json(self) -> dict:
         d = {"kind": self.kind, "amount": self.amount, "links": self.links, "parts": self.parts}
+        if self.params:
+            d["params"] = self.params
         if self.joint is not None:
             d["joint"] = self.joint
         if self.q is not None:

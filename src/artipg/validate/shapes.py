@@ -1,51 +1,38 @@
 """Solid pieces of an object for validation: exact SDFs and surface samples per piece.
 
 A *piece* is one solid in one link: a geometry-template primitive of an artipg object
-(exact signed distance) or a triangle mesh of a URDF folder. Every piece carries
+(exact signed distance; a rectangular ring counts as its four boxes) or a triangle
+mesh of a URDF folder. Every piece carries
 
 - its frame in its link frame, ``T`` (M, 4, 4), and its local bounding box
   (``center``, ``half``: (M, 3));
-- surface samples in its own frame, grouped by piece (``points`` (N, 3) with
-  ``offsets`` (M + 1,)): area-proportional per surface component with a minimum
-  per component, plus the corners and edge points of boxes, so small faces
-  (a handle post's end cap) and sharp features are never missed;
-- a vectorised signed distance ``sdf(piece_rows, x)`` (negative inside, metres).
+- a vectorised signed distance ``sdf(piece_rows, x)`` (negative inside, metres);
+- surface samples in its own frame, drawn on first use (:meth:`Pieces.require`):
+  area-proportional per surface component with a minimum per component, plus the
+  corners and edge points of boxes, so that small faces (a handle post's end cap)
+  and sharp features are never missed. Box-box pairs never need samples.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-
 import numpy as np
 
 from artipg.geometry.box import Cuboid, RectRing
+from artipg.validate.rowsdf import ROW_SDF, cuboid_rows
 
 #: Surface samples per square metre, and the per-component minimum / maximum.
-DENSITY = 4000.0
-MIN_PER_COMPONENT = 6
-MAX_PER_COMPONENT = 160
+DENSITY = 2000.0
+MIN_PER_COMPONENT = 4
+MAX_PER_COMPONENT = 64
 
 
-def _cuboid_rows(P: np.ndarray, x: np.ndarray) -> np.ndarray:
-    q = np.abs(x) - 0.5 * P
-    return np.sqrt((np.maximum(q, 0.0) ** 2).sum(axis=1)) + np.minimum(q.max(axis=1), 0.0)
+_cuboid_rows = cuboid_rows
 
 
-def _rect_ring_rows(P: np.ndarray, x: np.ndarray) -> np.ndarray:
-    outer = _cuboid_rows(P[:, :3], x)
-    hole = _cuboid_rows(np.column_stack([P[:, 3], P[:, 4], 4.0 * P[:, 2] + 1.0]), x)
-    return np.maximum(outer, -hole)
-
-
-#: Geometry templates with a signed distance vectorised over rows of parameters.
-ROW_SDF = {Cuboid: _cuboid_rows, RectRing: _rect_ring_rows}
-
-
-@dataclass
 class Pieces:
     """The solid pieces of an object (see module docstring).
 
-    Attributes
+    Parameters
     ----------
     link, part : (M,) int64
         Link and part index of every piece.
@@ -53,36 +40,85 @@ class Pieces:
         Piece frame in its link frame.
     center, half : (M, 3) float64
         Local axis-aligned bounding box (centre and half extents), piece frame.
-    points : (N, 3) float64
-        Surface samples in their piece's frame, grouped by piece.
-    offsets : (M + 1,) int64
-        Piece ``i`` owns ``points[offsets[i]:offsets[i + 1]]``.
+    geom : list
+        Geometry template of every piece, or None for a mesh piece.
+    params : (M, p) float64
+        Parameters of primitive pieces (zero-padded).
     part_names : list of str
         Name of every part (index = part index).
     part_link : (P,) int64
         Link index of every part.
+    rng : numpy.random.Generator
+        Stream of the surface samples.
+    meshes : dict, optional
+        Piece index -> ``trimesh.Trimesh`` (piece frame) for mesh pieces.
     """
 
-    link: np.ndarray
-    part: np.ndarray
-    T: np.ndarray
-    center: np.ndarray
-    half: np.ndarray
-    points: np.ndarray
-    offsets: np.ndarray
-    part_names: list
-    part_link: np.ndarray
-    geom: list = field(default_factory=list)     # per piece: geometry template or None (mesh)
-    params: np.ndarray | None = None             # per piece parameters (padded), primitives only
-    meshes: dict = field(default_factory=dict)   # piece index -> trimesh.Trimesh (mesh pieces)
+    def __init__(self, link, part, T, center, half, geom, params, part_names, part_link, rng, meshes=None):
+        self.link = np.asarray(link, dtype=np.int64)
+        self.part = np.asarray(part, dtype=np.int64)
+        self.T = T
+        self.center = center
+        self.half = half
+        self.geom = list(geom)
+        self.params = params
+        self.part_names = list(part_names)
+        self.part_link = np.asarray(part_link, dtype=np.int64)
+        self.meshes = meshes or {}
+        self._rng = rng
+        kinds: list = []
+        for g in self.geom:
+            if g not in kinds:
+                kinds.append(g)
+        self._kinds = kinds
+        self._kind = np.array([kinds.index(g) for g in self.geom], dtype=np.int64)
+        self._nparams = [len(g.params) if g is not None else 0 for g in kinds]
+        self.is_box = np.array([g is Cuboid for g in self.geom], dtype=bool)
+        M = len(self.geom)
+        self.start = np.zeros(M, dtype=np.int64)
+        self.count = np.zeros(M, dtype=np.int64)
+        self._chunks: list = []
+        self._size = 0
+        self._points = np.zeros((0, 3))
 
     @property
     def n(self) -> int:
         return len(self.link)
 
     @property
-    def counts(self) -> np.ndarray:
-        return np.diff(self.offsets)
+    def points(self) -> np.ndarray:
+        """All surface samples drawn so far (N, 3), piece frames."""
+        if len(self._chunks) > 1 or (self._chunks and self._chunks[0] is not self._points):
+            self._points = np.concatenate(self._chunks)
+            self._chunks = [self._points]
+        return self._points
+
+    def samples(self, i: int) -> np.ndarray:
+        """Surface samples (n, 3) of piece ``i`` in its frame (drawn if needed)."""
+        self.require(np.array([i]))
+        return self.points[self.start[i]:self.start[i] + self.count[i]]
+
+    def require(self, idx: np.ndarray) -> None:
+        """Draw the surface samples of the pieces ``idx`` that have none yet."""
+        idx = np.unique(idx)
+        idx = idx[self.count[idx] == 0]
+        if not len(idx):
+            return
+        kinds = self._kind[idx]
+        for k in np.unique(kinds):
+            rows = idx[kinds == k]
+            g = self._kinds[k]
+            if g is None:
+                p, owner = _sample_meshes([self.meshes[int(r)] for r in rows], rows, self._rng)
+            else:
+                P = self.params[rows, :self._nparams[k]]
+                p, owner = _sample_group(g, P, rows, self._rng)
+            order = np.argsort(owner, kind="stable")
+            cnt = np.bincount(owner, minlength=self.n)[rows]
+            self.start[rows] = self._size + np.cumsum(cnt) - cnt
+            self.count[rows] = cnt
+            self._chunks.append(p[order])
+            self._size += len(p)
 
     def sdf(self, rows: np.ndarray, x: np.ndarray) -> np.ndarray:
         """Signed distance (K,) of points ``x`` (K, 3), each in the frame of its piece
@@ -94,57 +130,64 @@ class Pieces:
         for k in np.unique(kind):
             sel = np.flatnonzero(kind == k)
             g = self._kinds[k]
+            r = rows[sel]
             if g in ROW_SDF:
-                r = rows[sel]
                 out[sel] = ROW_SDF[g](self.params[r, :self._nparams[k]], x[sel])
                 continue
-            r = rows[sel]
             order = np.argsort(r, kind="stable")
-            r_sorted = r[order]
-            cuts = np.flatnonzero(np.diff(r_sorted)) + 1
+            cuts = np.flatnonzero(np.diff(r[order])) + 1
             for chunk in np.split(order, cuts):
                 piece = int(r[chunk[0]])
-                idx = sel[chunk]
+                i = sel[chunk]
                 if g is None:
-                    out[idx] = _mesh_sdf(self.meshes[piece], x[idx])
+                    out[i] = _mesh_sdf(self.meshes[piece], x[i])
                 else:
-                    out[idx] = g.sdf(tuple(self.params[piece, :self._nparams[k]]), x[idx])
+                    out[i] = g.sdf(tuple(self.params[piece, :self._nparams[k]]), x[i])
         return out
-
-    def __post_init__(self):
-        kinds = []
-        for g in self.geom:
-            if g not in kinds:
-                kinds.append(g)
-        self._kinds = kinds
-        self._kind = np.array([kinds.index(g) for g in self.geom], dtype=np.int64)
-        self._nparams = [len(g.params) if g is not None else 0 for g in kinds]
 
     # ------------------------------------------------------------ constructors
     @classmethod
     def of(cls, obj, rng: np.random.Generator) -> "Pieces":
-        """The primitives of an :class:`artipg.model.ArticulatedObject` as pieces."""
+        """The primitives of an :class:`artipg.model.ArticulatedObject` as pieces.
+
+        A rectangular ring (frame) becomes its four boxes, so that every box-like
+        solid goes through the exact box-box tests of :mod:`artipg.validate.contacts`.
+        """
         table = obj.primitive_table
-        M = table.n_prims
-        geom: list = [None] * M
-        width = max(len(g.geom.params) for g in table.groups)
+        geom, Ps, Ts, links, parts, kinds = [], [], [], [], [], []
+        for g in table.groups:
+            T = table.prim_T[g.prim]
+            if g.geom is RectRing:
+                sizes, offs = _rect_ring_boxes(g.P)
+                Tb = np.repeat(T, 4, axis=0)
+                Tb[:, :3, 3] += np.einsum("kij,kj->ki", Tb[:, :3, :3], offs)
+                geom += [Cuboid] * len(sizes)
+                kinds.append(Cuboid)
+                Ps.append(sizes)
+                Ts.append(Tb)
+                links.append(np.repeat(g.link, 4))
+                parts.append(np.repeat(g.part, 4))
+            else:
+                geom += [g.geom] * len(g.P)
+                kinds.append(g.geom)
+                Ps.append(g.P)
+                Ts.append(T)
+                links.append(g.link)
+                parts.append(g.part)
+        M = len(geom)
+        width = max(P.shape[1] for P in Ps)
         params = np.zeros((M, width))
         center = np.zeros((M, 3))
         half = np.zeros((M, 3))
-        pts, owner = [], []
-        for g in table.groups:
-            for k in g.prim:
-                geom[k] = g.geom
-            params[g.prim, :g.P.shape[1]] = g.P
-            b = g.geom.bounds_batch(g.P)
-            center[g.prim] = 0.5 * (b[:, 0] + b[:, 1])
-            half[g.prim] = 0.5 * (b[:, 1] - b[:, 0])
-            p, o = _sample_group(g.geom, g.P, g.comp_area, g.prim, rng)
-            pts.append(p)
-            owner.append(o)
-        points, offsets = _group_by_owner(np.concatenate(pts), np.concatenate(owner), M)
-        return cls(table.prim_link.copy(), table.prim_part.copy(), table.prim_T.copy(), center, half, points,
-                   offsets, [p.name for p in obj.parts], obj.part_link.copy(), geom, params)
+        k = 0
+        for P, g in zip(Ps, kinds):
+            params[k:k + len(P), :P.shape[1]] = P
+            b = g.bounds_batch(P)
+            center[k:k + len(P)] = 0.5 * (b[:, 0] + b[:, 1])
+            half[k:k + len(P)] = 0.5 * (b[:, 1] - b[:, 0])
+            k += len(P)
+        return cls(np.concatenate(links), np.concatenate(parts), np.concatenate(Ts), center, half, geom, params,
+                   [p.name for p in obj.parts], obj.part_link, rng)
 
     @classmethod
     def of_meshes(cls, items, part_names, part_link, rng: np.random.Generator) -> "Pieces":
@@ -158,52 +201,63 @@ class Pieces:
         rng : numpy.random.Generator
             Stream for the surface samples.
         """
-        import trimesh
-
         M = len(items)
-        link = np.array([it[0] for it in items], dtype=np.int64)
-        part = np.array([it[1] for it in items], dtype=np.int64)
-        T = np.array([it[3] for it in items]).reshape(M, 4, 4)
-        center = np.zeros((M, 3))
-        half = np.zeros((M, 3))
-        pts, owner, meshes = [], [], {}
-        for i, (_, _, mesh, _) in enumerate(items):
-            b = mesh.bounds
-            center[i] = 0.5 * (b[0] + b[1])
-            half[i] = 0.5 * (b[1] - b[0])
-            n = int(np.clip(np.ceil(mesh.area * DENSITY), 64, 4000))
-            p, _ = trimesh.sample.sample_surface(mesh, n, seed=int(rng.integers(2 ** 31)))
-            pts.append(np.concatenate([p, mesh.vertices[:: max(1, len(mesh.vertices) // 512)]]))
-            owner.append(np.full(len(pts[-1]), i))
-            meshes[i] = mesh
-        points, offsets = _group_by_owner(np.concatenate(pts) if pts else np.zeros((0, 3)),
-                                          np.concatenate(owner) if owner else np.zeros(0, np.int64), M)
-        return cls(link, part, T, center, half, points, offsets, list(part_names),
-                   np.asarray(part_link, dtype=np.int64), [None] * M, np.zeros((M, 1)), meshes)
+        T = np.array([it[3] for it in items], dtype=float).reshape(M, 4, 4)
+        b = np.array([it[2].bounds for it in items], dtype=float).reshape(M, 2, 3)
+        meshes = {i: it[2] for i, it in enumerate(items)}
+        return cls([it[0] for it in items], [it[1] for it in items], T, 0.5 * (b[:, 0] + b[:, 1]),
+                   0.5 * (b[:, 1] - b[:, 0]), [None] * M, np.zeros((M, 1)), part_names, part_link, rng, meshes)
 
 
 def _mesh_sdf(mesh, x: np.ndarray) -> np.ndarray:
-    """Signed distance to a triangle mesh (negative inside), metres."""
+    """Signed distance to a triangle mesh (negative inside), metres; the sign comes
+    from ray tests, so it is reliable for closed meshes only."""
     import trimesh
 
     return -trimesh.proximity.signed_distance(mesh, x)
 
 
-def _sample_group(geom, P, comp_area, prim, rng):
-    """Surface samples of all primitives of one geometry template (local frames)."""
+def _sample_meshes(meshes, rows, rng):
+    import trimesh
+
+    pts, owner = [], []
+    for r, mesh in zip(rows, meshes):
+        n = int(np.clip(np.ceil(mesh.area * DENSITY * 2), 64, 4000))
+        p, _ = trimesh.sample.sample_surface(mesh, n, seed=int(rng.integers(2 ** 31)))
+        v = np.asarray(mesh.vertices)[:: max(1, len(mesh.vertices) // 512)]
+        pts.append(np.concatenate([p, v]))
+        owner.append(np.full(len(pts[-1]), r))
+    return np.concatenate(pts), np.concatenate(owner)
+
+
+def _sample_group(geom, P, rows, rng):
+    """Surface samples of pieces ``rows`` of one geometry template (local frames)."""
+    comp_area = geom.component_areas(P)
     n = np.where(comp_area > 0.0,
                  np.clip(np.ceil(comp_area * DENSITY), MIN_PER_COMPONENT, MAX_PER_COMPONENT), 0).astype(np.int64)
     M, C = comp_area.shape
     cells = np.repeat(np.arange(M * C), n.ravel())
-    rows = cells // C
-    p, _ = geom.sample_components(P[rows], cells - rows * C, rng)
-    owner = prim[rows]
-    if geom is Cuboid:  # corners and edge points: where boxes poke into each other
+    r = cells // C
+    p, _ = geom.sample_components(P[r], cells - r * C, rng)
+    owner = rows[r]
+    if geom is Cuboid:  # corners and edge points: where boxes poke into other solids
         f = _BOX_FEATURES
-        extra = (f[None] * P[:, None, :]).reshape(-1, 3)
-        p = np.concatenate([p, extra])
-        owner = np.concatenate([owner, np.repeat(prim, len(f))])
+        p = np.concatenate([p, (f[None] * P[:, None, :]).reshape(-1, 3)])
+        owner = np.concatenate([owner, np.repeat(rows, len(f))])
     return p, owner
+
+
+def _rect_ring_boxes(P: np.ndarray):
+    """The four boxes of rectangular rings ``P`` (m, 5): sizes and centre offsets, (4m, 3)
+    each, in the order of :meth:`artipg.geometry.RectRing.pieces`."""
+    ox, oy, d, ix, iy = P.T
+    bx, by = (ox - ix) / 2, (oy - iy) / 2
+    z = np.zeros_like(ox)
+    sizes = np.stack([np.column_stack([ox, by, d]), np.column_stack([ox, by, d]),
+                      np.column_stack([bx, iy, d]), np.column_stack([bx, iy, d])], axis=1)
+    offs = np.stack([np.column_stack([z, (iy + by) / 2, z]), np.column_stack([z, -(iy + by) / 2, z]),
+                     np.column_stack([(ix + bx) / 2, z, z]), np.column_stack([-(ix + bx) / 2, z, z])], axis=1)
+    return sizes.reshape(-1, 3), offs.reshape(-1, 3)
 
 
 def _box_features() -> np.ndarray:
@@ -223,9 +277,3 @@ def _box_features() -> np.ndarray:
 
 
 _BOX_FEATURES = _box_features()
-
-
-def _group_by_owner(points: np.ndarray, owner: np.ndarray, M: int):
-    order = np.argsort(owner, kind="stable")
-    counts = np.bincount(owner, minlength=M)
-    return points[order], np.concatenate([[0], np.cumsum(counts)]).astype(np.int64)

@@ -1,0 +1,184 @@
+"""Windows: casement, awning/hopper, horizontal sliding and double-hung sash windows.
+
+Parts: a rectangular frame (optional front sill); sashes made of a stile-and-rail
+frame, glass and optional glazing bars (one to four rows and one to three columns of
+lites). Casement windows split the opening with mullions into 1-3 sections, each with
+a side-hung sash (revolute about its vertical front edge, opening inwards towards the
+viewer, -x, 0..1.2-1.7 rad) or a fixed pane, sashes resting on a stop bead; an
+opening sash carries a window handle (fixed base plate, lever revolute 0..pi/2 about
+the sash normal). Awning sashes are top-hung (bottom swings out, 0..0.3-0.8 rad) or
+bottom-hung hoppers (0..0.2-0.4 rad) with a fixed pull. Sliding windows run 2-3
+sashes in two tracks separated by guide strips: sashes in the front track slide
+along y (prismatic), those in the back track are fixed or slide the other way.
+Double-hung windows run the lower sash up (prismatic +z) in the front track and the
+upper sash down (or fixed: single-hung) in the back one; lift handles on the lower rail.
+Joints: 1-6 movable. Sizes (metres): 0.4-2.4 wide, 0.4-1.8 tall, frames 35-70 mm.
+"""
+
+from __future__ import annotations
+
+import math
+
+from artipg.geometry import cuboid_between
+from artipg.geometry.transforms import rot_x, translation
+from artipg.model.part import Part
+from artipg.rules import Category, Slot
+from artipg.templates.frames import glazed_panel, stop_ring, swing_clearance, window_frame
+from artipg.templates.handles import arch_handle, edge_pull, flat_bar_handle
+from artipg.templates.mounting import free_edge_yz, mount_hinged, mount_sliding
+from artipg.templates.turn_handles import casement_handle, mount_turning
+
+# sub-category -> section (casement, awning) or window (sliding, hung) width, height,
+# sections or sashes (lo, hi), sash thickness
+SIZES = {"casement": ((0.4, 0.75), (0.6, 1.6), (1, 3), (0.045, 0.07)),
+         "awning": ((0.5, 1.0), (0.4, 0.8), (1, 2), (0.045, 0.065)),
+         "sliding": ((0.8, 2.4), (0.6, 1.5), (2, 3), (0.025, 0.04)),
+         "double_hung": ((0.5, 1.2), (0.9, 1.8), (2, 2), (0.035, 0.045))}
+PULLS = {arch_handle: 1.0, flat_bar_handle: 1.0, edge_pull: 1.0}
+
+
+def frame(ctx):
+    p = ctx.p
+    w, h, n, t = SIZES[ctx.sub]
+    W, H, n, ts = p.uniform("width", *w), p.uniform("height", *h), p.integers("sections", *n), p.uniform(
+        "sash_thickness", *t)
+    root = ctx.builder.create_link("frame")
+    if ctx.sub in ("sliding", "double_hung"):
+        n = 2 if W < 1.5 else n
+        lt, gt, e = p.uniform("lip", 0.008, 0.012), p.uniform("guide", 0.008, 0.012), 0.002
+        fr = root.add(window_frame(p.scope("frame"), W, H, depth=2 * lt + 4 * e + 2 * ts + gt))
+        D, gh = fr.anchor("depth")[0], p.uniform("guide_height", 0.015, 0.025)
+        # lips at the front and back and a guide between the two tracks (sashes: +- 2 mm)
+        xs = ((0.0, lt), (lt + 2 * e + ts, lt + 2 * e + ts + gt), (D - lt, D))
+        if ctx.sub == "sliding":  # along the head and the sill
+            prims = [cuboid_between((x0, -W / 2, z0), (x1, W / 2, z0 + gh)) for x0, x1 in xs for z0 in (0, H - gh)]
+        else:  # along the jambs
+            prims = [cuboid_between((x0, y0, 0), (x1, y0 + gh, H)) for x0, x1 in xs for y0 in (-W / 2, W / 2 - gh)]
+        root.add(Part("frame", "track", prims))
+        return root, dict(W=W, H=H, n=n, ts=ts, tracks=(lt + e, lt + 3 * e + ts + gt))
+    mw = p.uniform("mullion", 0.04, 0.07)
+    Wo = n * W + (n - 1) * mw
+    fr = root.add(window_frame(p.scope("frame"), Wo, H, depth=ts + p.uniform("stop_room", 0.02, 0.05)))
+    ys = [-Wo / 2 + W / 2 + i * (W + mw) for i in range(n)]
+    prims = [cuboid_between((0, y + W / 2, 0), (fr.anchor("depth")[0], y + W / 2 + mw, H)) for y in ys[:-1]]
+    if prims:
+        root.add(Part("frame", "mullion", prims))
+    band, sd = p.uniform("stop_band", 0.01, 0.015), p.uniform("stop_depth", 0.008, 0.015)
+    for y in ys:
+        root.add(stop_ring(W, H, ts, sd, band, (y, H / 2)))
+    return root, dict(W=W, H=H, n=n, ts=ts, ys=ys)
+
+
+def sashes(ctx):
+    root, d = ctx.out["frame"]
+    p, ts, W, H = ctx.p, d["ts"], d["W"], d["H"]
+    c = p.uniform("gap", 0.002, 0.004)
+    bars = p.flag("glazing_bars", 0.4)
+    grid = dict(rows=p.integers("rows", 1, 3) if bars else 1, cols=p.integers("cols", 1, 3) if bars else 1,
+                rail=p.uniform("rail", 0.035, 0.07))
+
+    def sash(q, w, h):  # the same style for every sash of the window
+        return glazed_panel(q, w, h, ts, "sash", rows=min(grid["rows"], max(1, int(h / 0.2))),
+                            cols=min(grid["cols"], max(1, int(w / 0.2))), rail=grid["rail"])
+    if ctx.sub == "sliding":
+        return _sliding(ctx, root, d, c, sash, grid["rail"])
+    if ctx.sub == "double_hung":
+        return _hung(ctx, root, d, c, sash, grid["rail"])
+    lim = p.uniform("limit", 1.2, 1.7)
+    hinge = p.choice("awning_hinge", {"+z": 2.0, "-z": 1.0}) if ctx.sub == "awning" else None
+    fixed_mid = d["n"] == 3 and p.flag("fixed_middle", 0.6)
+    for i, y in enumerate(d["ys"]):
+        q = p.scope(f"sash{i}")
+        if fixed_mid and i == 1:
+            frame_part, glass = sash(q, W - 2 * c, H - 2 * c)
+            root.add(frame_part, translation(ts, y, H / 2))
+            root.add(glass, frame_part.pose)
+            continue
+        outer = "-y" if i == 0 else "+y" if i == d["n"] - 1 else None  # side sashes hinge on the jambs
+        side = hinge or (outer if d["n"] > 1 and outer else q.choice("hinge", ("+y", "-y")))
+        vertical = side in ("+y", "-y")
+        cf = swing_clearance(ts, W if vertical else H, c)
+        sw, sh = (W - c - cf, H - 2 * c) if vertical else (W - 2 * c, H - c - cf)
+        sgn = 1.0 if side in ("+y", "+z") else -1.0
+        cy, cz = y + (sgn * (cf - c) / 2 if vertical else 0.0), H / 2 + (0.0 if vertical else sgn * (cf - c) / 2)
+        if not vertical:
+            lim = p.uniform("awning_limit", 0.3, 0.8) if side == "+z" else p.uniform("hopper_limit", 0.2, 0.4)
+        frame_part, glass = sash(q, sw, sh)
+        link = mount_hinged(ctx.builder, root, frame_part, front_x=ts, center_yz=(cy, cz), size_yz=(sw, sh),
+                            side=side, limits=(0.0, lim), name="sash")
+        link.add(glass, frame_part.pose)
+        hy, hz = free_edge_yz(side, (sw, sh), grid["rail"] / 2)
+        front = frame_part.pose @ translation(-ts, hy, hz)
+        if vertical:  # window handle: fixed base, lever pointing down, a quarter turn
+            base, lever = casement_handle(q.scope("handle"))
+            link.add(base, front)
+            mount_turning(ctx.builder, link, lever, front @ translation(base.anchor("mount")[0], 0, 0),
+                          (0.0, math.pi / 2), name="handle", axis=(sgn, 0.0, 0.0))  # towards the hinge
+        else:
+            pull = ctx.choose("pull", PULLS)(q.scope("pull"), length=min(0.2, 0.4 * sw))
+            link.add(pull, front @ rot_x(math.pi / 2))
+
+
+def _sliding(ctx, root, d, c, sash, rail):
+    p, ts, Wo, H, n = ctx.p, d["ts"], d["W"], d["H"], d["n"]
+    xa, xb = d["tracks"]
+    ov = p.uniform("overlap", 0.03, 0.06)
+    sh = H - 2 * c
+    if n == 2:
+        ws = (Wo + ov) / 2 - c
+        travel = Wo - ws - 2 * c - 0.002
+        s = p.choice("direction", (1.0, -1.0))
+        specs = [(xa, -s * (Wo / 2 - c - ws / 2), s, travel), (xb, s * (Wo / 2 - c - ws / 2),
+                                                                 -s if p.flag("both_slide", 0.5) else 0.0, travel)]
+    else:  # XOX: fixed centre pane behind, side sashes slide towards the centre
+        wc = Wo / 2 + 2 * ov
+        ws = (Wo - wc) / 2 + ov - c
+        travel = (Wo - 2 * c - 2 * ws) / 2 - 0.002
+        specs = [(xb, 0.0, 0.0, 0.0), (xa, -(Wo / 2 - c - ws / 2), 1.0, travel), (xa, Wo / 2 - c - ws / 2, -1.0, travel)]
+    pull = ctx.choose("pull", PULLS)
+    for i, (x, y, s, travel) in enumerate(specs):
+        w = wc if n == 3 and i == 0 else ws
+        frame_part, glass = sash(p.scope(f"sash{i}"), w, sh)
+        if not s:
+            root.add(frame_part, translation(x + ts, y, H / 2))
+            root.add(glass, frame_part.pose)
+            continue
+        link = mount_sliding(ctx.builder, root, frame_part, origin=translation(x + ts, y, H / 2), axis=(0, s, 0),
+                             limits=(0.0, travel), name="sash")
+        link.add(glass, frame_part.pose)
+        if x == xa:  # pull on the stile that leads the sash open
+            hy = s * (w / 2 - rail / 2)
+            link.add(pull(p.scope(f"pull{i}"), length=min(0.2, 0.3 * sh)), translation(-ts, -hy, 0.0))
+
+
+def _hung(ctx, root, d, c, sash, rail):
+    p, ts, W, H = ctx.p, d["ts"], d["W"], d["H"]
+    xa, xb = d["tracks"]
+    ov = p.uniform("meeting_overlap", 0.03, 0.05)
+    hs, ws = (H + ov) / 2 - c, W - 2 * c
+    travel = H - 2 * c - hs - 0.002
+    lower = sash(p.scope("lower"), ws, hs)
+    link = mount_sliding(ctx.builder, root, lower[0], origin=translation(xa + ts, 0.0, c + hs / 2), axis=(0, 0, 1),
+                         limits=(0.0, travel), name="sash")
+    link.add(lower[1], lower[0].pose)
+    upper = sash(p.scope("upper"), ws, hs)
+    origin = translation(xb + ts, 0.0, H - c - hs / 2)
+    if p.flag("double_hung", 0.6):
+        up = mount_sliding(ctx.builder, root, upper[0], origin=origin, axis=(0, 0, -1), limits=(0.0, travel),
+                           name="sash")
+        up.add(upper[1], upper[0].pose)
+    else:
+        root.add(upper[0], origin)
+        root.add(upper[1], upper[0].pose)
+    tmpl, k = ctx.choose("lift", PULLS), p.integers("lifts", 1, 2)
+    for i in range(k):
+        y = 0.0 if k == 1 else (i - 0.5) * 0.5 * ws
+        h = tmpl(p.scope(f"lift{i}"), length=min(0.12, 0.25 * ws))
+        link.add(h, translation(-ts, y, -hs / 2 + rail / 2) @ rot_x(math.pi / 2))
+
+
+RULE = Category(
+    name="window",
+    subcategories={"casement": 3.0, "sliding": 2.0, "double_hung": 2.0, "awning": 1.0},
+    slots=(Slot("frame", frame), Slot("sashes", sashes, after=("frame",))),
+)

@@ -1,0 +1,328 @@
+"""``artipg eval`` (a generated set against a reference set) and ``artipg stats`` (one set)."""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+from typing import List, Optional
+
+import typer
+from rich.console import Console
+from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn, TimeRemainingColumn
+from rich.table import Table
+
+from artipg.commands import err_console, fail
+
+console = Console(highlight=False)
+
+_NORMALIZE_HELP = "Per-cloud normalisation before distances: 'bbox' (centre at the box centre, unit box " \
+                  "diagonal) or 'none' (raw metres)."
+_SOURCE_HELP = "Where points come from: 'auto' (artipg's points.npz when it has enough points, else the " \
+               "URDF's meshes), 'mesh' or 'npz'."
+
+
+def _progress(quiet: bool) -> Progress:
+    columns = (TextColumn("{task.description}"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(),
+               TimeRemainingColumn())
+    return Progress(*columns, console=err_console, disable=quiet, transient=False)
+
+
+def _find(root: Path, what: str) -> dict:
+    from artipg.io import find_object_folders
+
+    try:
+        found = find_object_folders(root)
+    except FileNotFoundError:
+        fail(f"{what} folder {str(root)!r} is not a directory")
+    if not found:
+        fail(f"no object folders (with mobility.urdf) under {str(root)!r}")
+    return found
+
+
+def _select(found: dict, only: list[str], what: str) -> dict:
+    if not only:
+        return found
+    missing = [c for c in only if c not in found]
+    if missing:
+        fail(f"{what} has no category {', '.join(missing)}; it has: {', '.join(found)}")
+    return {c: found[c] for c in only}
+
+
+def _load(bar: Progress, label: str, folders, points: int, source: str, seed: int, workers: int | None):
+    from artipg.io import load_set
+
+    job = bar.add_task(f"reading {label}", total=len(folders))
+    s = load_set(folders, points, source=source, seed=seed, workers=workers,
+                 progress=lambda k: bar.advance(job, k))
+    for folder, why in s.errors:
+        err_console.print(f"[yellow]skipped[/] {folder}: {why}", soft_wrap=True)
+    return s
+
+
+def _fmt(x, spec: str = ".4f", scale: float = 1.0) -> str:
+    if x is None or (isinstance(x, float) and math.isnan(x)):
+        return "-"
+    return format(x * scale, spec)
+
+
+def _mean_std(d: dict, spec: str = ".2f") -> str:
+    if math.isnan(d["mean"]):
+        return "-"
+    return f"{d['mean']:{spec}} ± {d['std']:{spec}}"
+
+
+def _types(d: dict) -> str:
+    return ", ".join(f"{t} {v:.2f}" for t, v in d.items()) or "-"
+
+
+def _structure_rows(table: Table, structs: list[dict], pad: int) -> None:
+    """Structure rows, one column per set in ``structs``; ``pad`` empty trailing cells."""
+    def row(name, cells):
+        table.add_row(name, *cells, *([""] * pad))
+
+    row("joints / object", [_mean_std(s["joints"]) for s in structs])
+    row("joint types / object", [_types(s["joint_types"]) for s in structs])
+    row("links / object", [_mean_std(s["links"]) for s in structs])
+    for key, name in (("depth_x", "depth x (m)"), ("width_y", "width y (m)"), ("height_z", "height z (m)"),
+                      ("diagonal", "diagonal (m)")):
+        row(name, [_mean_std(s["size"][key], ".3f") for s in structs])
+
+
+def _histogram_table(title: str, rows: dict) -> Table:
+    from artipg.metrics.structure import JOINT_BINS
+
+    t = Table(title=title, title_justify="left")
+    t.add_column("set")
+    for b in JOINT_BINS:
+        t.add_column(b, justify="right")
+    for name, hist in rows.items():
+        t.add_row(name, *(f"{100 * hist[b]:.0f}" for b in JOINT_BINS))
+    return t
+
+
+def _write_json(path: Optional[Path], data: dict) -> None:
+    if path is None:
+        return
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(json.dumps(data, indent=1, allow_nan=False, default=_json_default) + "\n")
+    except OSError as e:
+        fail(f"cannot write {str(path)!r}: {e.strerror or e}")
+    console.print(f"wrote {path}")
+
+
+def _json_default(x):
+    raise TypeError(f"not JSON serialisable: {type(x).__name__}")
+
+
+def _clean(x):
+    """NaN -> None, recursively (strict JSON)."""
+    if isinstance(x, dict):
+        return {k: _clean(v) for k, v in x.items()}
+    if isinstance(x, (list, tuple)):
+        return [_clean(v) for v in x]
+    if isinstance(x, float) and not math.isfinite(x):
+        return None
+    return x
+
+
+def _pair_categories(gen: dict, ref: dict) -> list[tuple[str, str, str]]:
+    """(label, generated category, reference category) to compare."""
+    shared = [c for c in gen if c in ref]
+    for c in gen:
+        if c not in ref:
+            err_console.print(f"[yellow]note:[/] category {c!r} is only in the generated set; skipped")
+    for c in ref:
+        if c not in gen:
+            err_console.print(f"[yellow]note:[/] category {c!r} is only in the reference set; skipped")
+    if shared:
+        return [(c, c, c) for c in shared]
+    if len(gen) == 1 and len(ref) == 1:
+        (g,), (r,) = gen, ref
+        err_console.print(f"[yellow]note:[/] no shared category name; comparing {g!r} with {r!r}")
+        return [(f"{g} vs {r}", g, r)]
+    fail("the two sets share no category; use --category / --reference-category to pick the ones to compare")
+    return []
+
+
+def register(app: typer.Typer) -> None:
+    @app.command("eval")
+    def eval_cmd(
+        generated: Path = typer.Option(..., "--generated", "-g", help="Generated set: DIR/<category>/<id>/ or a "
+                                                                         "flat folder of object folders."),
+        reference: Path = typer.Option(..., "--reference", "-r", help="Reference set (same layouts; "
+                                                                         "PartNet-Mobility folders work)."),
+        points: int = typer.Option(2048, "--points", help="Points per object."),
+        normalize: str = typer.Option("bbox", "--normalize", help=_NORMALIZE_HELP),
+        json_out: Optional[Path] = typer.Option(None, "--json", help="Write all numbers to this JSON file."),
+        plots: Optional[Path] = typer.Option(None, "--plots", help="Write PNG plots (joint counts, sizes) here."),
+        category: List[str] = typer.Option([], "--category", "-c", help="Only these generated categories."),
+        reference_category: List[str] = typer.Option([], "--reference-category",
+                                                     help="Only these reference categories (default: as "
+                                                          "--category)."),
+        workers: int = typer.Option(0, "--workers", "-j", help="Processes / threads (0: all cores)."),
+        source: str = typer.Option("auto", "--source", help=_SOURCE_HELP),
+        encoder: Optional[Path] = typer.Option(None, "--encoder", help="FID encoder weights (.npz; default: the "
+                                                                          "shipped one)."),
+        no_fid: bool = typer.Option(False, "--no-fid", help="Skip FID."),
+        seed: int = typer.Option(0, "--seed", help="Point-sampling seed."),
+        quiet: bool = typer.Option(False, "--quiet", "-q", help="No progress bars."),
+    ) -> None:
+        """Compare a generated object set with a reference set, per category: COV, MMD and
+        1-NNA (Chamfer-L1), NND of each set, FID, and structure statistics side by side."""
+        from artipg.metrics.encoder import PointNetEncoder, load_default_encoder
+        from artipg.metrics.evaluate import compare_sets
+        from artipg.metrics.structure import summarize_structure
+
+        _check_common(points, normalize, source, workers)
+        gen = _select(_find(generated, "generated"), category, "the generated set")
+        ref_found = _find(reference, "reference")
+        ref = _select(ref_found, reference_category or [c for c in category if c in ref_found], "the reference set")
+        pairs = _pair_categories(gen, ref)
+        enc = None
+        if not no_fid:
+            if encoder is not None:
+                try:
+                    enc = PointNetEncoder.load(encoder)
+                except (FileNotFoundError, ValueError, KeyError) as e:
+                    fail(f"cannot load encoder {str(encoder)!r}: {e}")
+            else:
+                enc = load_default_encoder()
+        n_workers = workers or None
+        report = {"generated": str(generated), "reference": str(reference), "points": points,
+                  "normalize": normalize, "distance": "chamfer_l1", "source": source, "seed": seed,
+                  "fid_encoder": None if enc is None else str(encoder or "default"), "categories": {}}
+        for label, gc, rc in pairs:
+            with _progress(quiet) as bar:
+                g = _load(bar, f"{gc} (generated)", gen[gc], points, source, seed, n_workers)
+                r = _load(bar, f"{rc} (reference)", ref[rc], points, source, seed, n_workers)
+                if len(g) < 1 or len(r) < 1:
+                    err_console.print(f"[yellow]note:[/] {label}: nothing readable; skipped")
+                    continue
+                job = bar.add_task(f"{label}: Chamfer matrix", total=len(g) + len(r))
+                res = compare_sets(g.points, r.points, normalize, "l1", n_workers, enc,
+                                   progress=lambda k: bar.advance(job, k))
+            res["structure"] = {"generated": summarize_structure(g.structures),
+                                "reference": summarize_structure(r.structures)}
+            report["categories"][label] = res
+            _print_eval(label, res, points, normalize, enc is not None)
+            if plots is not None:
+                _plot(plots, label, {"generated": g.structures, "reference": r.structures})
+        _write_json(json_out, _clean(report))
+
+    @app.command()
+    def stats(
+        folder: Path = typer.Argument(..., help="An object set: DIR/<category>/<id>/ or a flat folder."),
+        points: int = typer.Option(2048, "--points", help="Points per object (for NND)."),
+        normalize: str = typer.Option("bbox", "--normalize", help=_NORMALIZE_HELP),
+        json_out: Optional[Path] = typer.Option(None, "--json", help="Write all numbers to this JSON file."),
+        plots: Optional[Path] = typer.Option(None, "--plots", help="Write PNG plots (joint counts, sizes) here."),
+        category: List[str] = typer.Option([], "--category", "-c", help="Only these categories."),
+        workers: int = typer.Option(0, "--workers", "-j", help="Processes / threads (0: all cores)."),
+        source: str = typer.Option("auto", "--source", help=_SOURCE_HELP),
+        no_nnd: bool = typer.Option(False, "--no-nnd", help="Structure only (no point clouds, no distances)."),
+        seed: int = typer.Option(0, "--seed", help="Point-sampling seed."),
+        quiet: bool = typer.Option(False, "--quiet", "-q", help="No progress bars."),
+    ) -> None:
+        """Statistics of one object set per category: NND diversity (Chamfer-L1), joints per
+        object (histogram as in the paper's Fig. 4), joint types, links and sizes."""
+        from artipg.metrics.evaluate import set_statistics
+
+        _check_common(points, normalize, source, workers)
+        found = _select(_find(folder, "the"), category, "the set")
+        report = {"folder": str(folder), "points": points, "normalize": normalize, "distance": "chamfer_l1",
+                  "source": source, "seed": seed, "categories": {}}
+        structures = {}
+        for cat, folders in found.items():
+            with _progress(quiet) as bar:
+                s = _load(bar, cat, folders, points, source, seed, workers or None)
+                if not len(s):
+                    continue
+                job = bar.add_task(f"{cat}: Chamfer matrix", total=len(s) if not no_nnd else 0)
+                res = set_statistics(s.points, s.structures, normalize, "l1", workers or None, not no_nnd,
+                                     progress=lambda k: bar.advance(job, k))
+            res["n_objects"] = len(s)
+            report["categories"][cat] = res
+            structures[cat] = s.structures
+        _print_stats(report["categories"])
+        if plots is not None:
+            for cat, st in structures.items():
+                _plot(plots, cat, {cat: st})
+            if len(structures) > 1:
+                from artipg.metrics.plots import plot_joint_histograms
+
+                p = plot_joint_histograms(structures, plots / "joints_all.png", "movable joints per object")
+                console.print(f"wrote {p}")
+        _write_json(json_out, _clean(report))
+
+
+def _check_common(points: int, normalize: str, source: str, workers: int) -> None:
+    from artipg.io.reader import SOURCES
+    from artipg.metrics.normalize import NORMALIZATIONS
+
+    if points < 1:
+        fail(f"--points must be at least 1, got {points}")
+    if normalize not in NORMALIZATIONS:
+        fail(f"--normalize must be one of {', '.join(NORMALIZATIONS)}, got {normalize!r}")
+    if source not in SOURCES:
+        fail(f"--source must be one of {', '.join(SOURCES)}, got {source!r}")
+    if workers < 0:
+        fail(f"--workers must be >= 0, got {workers}")
+
+
+def _plot(folder: Path, label: str, structures: dict) -> None:
+    from artipg.metrics.plots import plot_joint_histograms, plot_sizes
+    from artipg.io.folders import snake_case
+
+    stem = snake_case(label) or "objects"
+    try:
+        a = plot_joint_histograms(structures, folder / f"{stem}_joints.png", f"{label}: movable joints per object")
+        b = plot_sizes(structures, folder / f"{stem}_sizes.png", f"{label}: bounding-box size at rest")
+    except OSError as e:
+        fail(f"cannot write plots to {str(folder)!r}: {e.strerror or e}")
+    console.print(f"wrote {a} and {b}")
+
+
+def _print_eval(label: str, res: dict, points: int, normalize: str, has_encoder: bool) -> None:
+    unit = "box diagonals" if normalize == "bbox" else "m"
+    t = Table(title=f"{label}: {res['n_generated']} generated vs {res['n_reference']} reference "
+                    f"({points} points, normalize={normalize}, Chamfer-L1 in {unit})", title_justify="left")
+    t.add_column("metric")
+    t.add_column("generated", justify="right")
+    t.add_column("reference", justify="right")
+    t.add_column("generated vs reference", justify="right")
+    t.add_row("objects", str(res["n_generated"]), str(res["n_reference"]), "")
+    t.add_row("COV (%) ↑", "", "", _fmt(res["cov"], ".1f", 100))
+    t.add_row("MMD ↓", "", "", _fmt(res["mmd"], ".5f"))
+    t.add_row("1-NNA (%) → 50", _fmt(res["one_nna_generated"], ".1f", 100), _fmt(res["one_nna_reference"], ".1f", 100),
+              _fmt(res["one_nna"], ".1f", 100))
+    t.add_row("NND (diversity)", _fmt(res["nnd_generated"], ".5f"), _fmt(res["nnd_reference"], ".5f"), "")
+    t.add_row("FID ↓", "", "", _fmt(res["fid"], ".4f") if has_encoder else "no encoder")
+    s = res["structure"]
+    _structure_rows(t, [s["generated"], s["reference"]], 1)
+    console.print(t)
+    console.print(_histogram_table(f"{label}: movable joints per object (% of objects)",
+                                   {"generated": s["generated"]["joints"]["histogram"],
+                                    "reference": s["reference"]["joints"]["histogram"]}))
+
+
+def _print_stats(cats: dict) -> None:
+    t = Table(title="object set statistics (Chamfer-L1 NND)", title_justify="left")
+    for col in ("category", "objects", "NND", "joints / object", "links / object", "height z (m)", "width y (m)",
+                "depth x (m)"):
+        t.add_column(col, justify="left" if col == "category" else "right")
+    for cat, r in cats.items():
+        s = r["structure"]
+        t.add_row(cat, str(r["n_objects"]), _fmt(r["nnd"], ".5f"), _mean_std(s["joints"]), _mean_std(s["links"]),
+                  _mean_std(s["size"]["height_z"], ".3f"), _mean_std(s["size"]["width_y"], ".3f"),
+                  _mean_std(s["size"]["depth_x"], ".3f"))
+    console.print(t)
+    console.print(_histogram_table("movable joints per object (% of objects)",
+                                   {c: r["structure"]["joints"]["histogram"] for c, r in cats.items()}))
+    tt = Table(title="joints per object by type", title_justify="left")
+    tt.add_column("category")
+    tt.add_column("joint types / object")
+    for cat, r in cats.items():
+        tt.add_row(cat, _types(r["structure"]["joint_types"]))
+    console.print(tt)

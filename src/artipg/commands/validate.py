@@ -1,0 +1,103 @@
+"""``artipg validate PATH...``: physical checks of object folders on disk."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from typing import List, Optional
+
+import typer
+from rich.console import Console
+from rich.table import Table
+
+from artipg.commands import err_console, fail
+
+console = Console(highlight=False)
+
+
+def _validate_one(task: tuple[str, bool]) -> dict:
+    """Worker: validate one folder; returns its JSON report (with "path" and "error")."""
+    from artipg.validate.folder import validate_folder
+
+    path, sim = task
+    try:
+        report, meta = validate_folder(path, simulate=sim)
+    except Exception as e:  # a broken folder is a failed object, not a crashed run
+        return {"path": path, "ok": False, "error": f"{type(e).__name__}: {e}", "checks": {}}
+    out = {"path": path, **{k: v for k, v in meta.items() if k != "path"}}
+    out.update(report.to_json())
+    return out
+
+
+def _cell(check: dict | None, unit: float = 1e3) -> str:
+    if check is None:
+        return "-"
+    worst = check.get("worst") or 0.0
+    mark = "[green]ok[/]" if check["ok"] else "[bold red]FAIL[/]"
+    return f"{mark} {worst * unit:.1f}"
+
+
+def _table(results: list[dict]) -> Table:
+    t = Table(title="artipg validate (worst values in mm)", show_lines=False)
+    t.add_column("object", overflow="fold")
+    t.add_column("geometry")
+    for name in ("penetration", "floating", "joint sweep", "simulator"):
+        t.add_column(name)
+    t.add_column("result")
+    for r in results:
+        c = r.get("checks", {})
+        sim = c.get("simulator")
+        sim_cell = "-" if sim is None else ("[green]ok[/]" if sim["ok"] else "[bold red]FAIL[/] " + ", ".join(
+            sorted({i["kind"] for i in sim["issues"]})))
+        result = "[green]pass[/]" if r["ok"] else f"[bold red]fail[/] {r.get('error', '')}"
+        t.add_row(r["path"], r.get("geometry", "-"), _cell(c.get("penetration")), _cell(c.get("floating")),
+                  _cell(c.get("joint_sweep")), sim_cell, result)
+    return t
+
+
+def register(app: typer.Typer) -> None:
+    @app.command()
+    def validate(
+        paths: List[Path] = typer.Argument(..., help="Object folders (with mobility.urdf), or folders holding them."),
+        json_out: Optional[Path] = typer.Option(None, "--json", help="Write the full report to this JSON file."),
+        sim: bool = typer.Option(True, "--sim/--no-sim", help="Run the pybullet / MuJoCo checks."),
+        workers: int = typer.Option(1, "--workers", "-j", help="Worker processes."),
+        issues: bool = typer.Option(False, "--issues", help="Print every issue under the table."),
+    ) -> None:
+        """Check penetration, floating parts, joint sweeps and simulators; exit 1 if any object fails."""
+        from artipg.validate.folder import find_objects
+
+        if workers < 1:
+            fail(f"--workers must be at least 1, got {workers}")
+        try:
+            folders = find_objects(paths)
+        except FileNotFoundError as e:
+            fail(str(e))
+        if not folders:
+            fail("no object folders (with mobility.urdf) under " + ", ".join(map(str, paths)))
+        tasks = [(str(f), sim) for f in folders]
+        if workers == 1:
+            results = [_validate_one(t) for t in tasks]
+        else:
+            from concurrent.futures import ProcessPoolExecutor
+
+            with ProcessPoolExecutor(max_workers=workers) as pool:
+                results = list(pool.map(_validate_one, tasks))
+        console.print(_table(results))
+        if issues:
+            for r in results:
+                for name, c in r.get("checks", {}).items():
+                    for i in c["issues"]:
+                        console.print(f"{r['path']}: {name}: {json.dumps(i)}", soft_wrap=True)
+        n_bad = sum(not r["ok"] for r in results)
+        if json_out is not None:
+            try:
+                json_out.write_text(json.dumps({"objects": results, "passed": len(results) - n_bad,
+                                                "failed": n_bad}, indent=1) + "\n")
+            except OSError as e:
+                fail(f"cannot write {str(json_out)!r}: {e.strerror or e}")
+        msg = f"{len(results) - n_bad} of {len(results)} objects pass"
+        if n_bad:
+            err_console.print(f"[bold red]{msg}[/]")
+            raise typer.Exit(1)
+        console.print(msg)

@@ -1,0 +1,47 @@
+"""Validate one artipg object: geometric checks, optionally the simulators."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from artipg.validate.blame import part_params
+from artipg.validate.checks import Tolerances, run_checks
+from artipg.validate.kinematics import Kinematics
+from artipg.validate.report import Report
+from artipg.validate.shapes import Pieces
+
+#: Second entropy word of the surface-sample stream: ``default_rng([seed, SAMPLE_STREAM])``.
+SAMPLE_STREAM = 0x5A3B1E
+
+
+def check_object(obj, tol: Tolerances = Tolerances(), simulate: bool = False, sim_options=None) -> Report:
+    """Run the validation checks on an :class:`artipg.model.ArticulatedObject`.
+
+    Parameters
+    ----------
+    obj : ArticulatedObject
+    tol : Tolerances
+        Geometric thresholds (metres).
+    simulate : bool
+        Also export the object to a temporary folder and run the simulator checks
+        (pybullet and MuJoCo; see :mod:`artipg.validate.sim`).
+    sim_options : artipg.validate.sim.SimOptions, optional
+
+    Returns
+    -------
+    Report
+        ``penetration``, ``floating`` and ``joint_sweep`` results (and ``simulator``),
+        each issue naming the links, parts and recorded parameters at fault.
+    """
+    rng = np.random.default_rng([int(obj.seed), SAMPLE_STREAM])
+    checks = run_checks(Kinematics.of(obj), Pieces.of(obj, rng), tol)
+    blame = part_params(obj)
+    for c in checks.values():
+        for issue in c.issues:
+            issue.params = sorted({n for p in issue.parts for n in blame.get(p, [])})
+    report = Report(checks, tol.to_json())
+    if simulate:
+        from artipg.validate.sim import SimOptions, simulate_object
+
+        report.checks["simulator"] = simulate_object(obj, sim_options or SimOptions())
+    return report

@@ -1,0 +1,260 @@
+"""Validate object folders on disk: artipg's own and PartNet-Mobility style.
+
+A folder holds a URDF (``mobility.urdf``, or the only ``*.urdf`` in it) and its
+meshes, and possibly an artipg ``annotation.json``. The geometric checks run on
+
+- the exact primitives, when the annotation names a registered category and
+  regenerating it from the recorded seed and parameters reproduces the URDF's
+  joints (the folder is then an untouched artipg export);
+- otherwise the URDF's visual geometry: meshes loaded with trimesh (each visual
+  element is a part; an artipg link mesh is split back into its closed
+  components), boxes, cylinders and spheres as exact primitives. Mesh signed
+  distances take their sign from ray tests, which is only reliable for closed
+  meshes (PartNet-Mobility meshes often are not; treat their penetration numbers
+  as estimates).
+
+The simulator checks always run on the URDF file itself.
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import numpy as np
+
+from artipg.validate.checks import Tolerances, run_checks
+from artipg.validate.kinematics import Kinematics
+from artipg.validate.report import Report
+from artipg.validate.shapes import Pieces
+
+#: Largest difference (metres / radians) between a folder's URDF joints and the
+#: regenerated object's for the exact path to be used.
+MATCH_TOL = 1e-4
+#: A mesh is split into its connected components (one piece each) when it has at
+#: most this many; otherwise it stays one piece.
+MAX_COMPONENTS = 64
+
+
+def find_urdf(folder: Path) -> Path:
+    """The object's URDF in ``folder``; raises FileNotFoundError."""
+    folder = Path(folder)
+    if folder.is_file() and folder.suffix == ".urdf":
+        return folder
+    p = folder / "mobility.urdf"
+    if p.is_file():
+        return p
+    cands = sorted(folder.glob("*.urdf"))
+    if len(cands) == 1:
+        return cands[0]
+    raise FileNotFoundError(f"no mobility.urdf (or single *.urdf) in {folder}")
+
+
+def find_objects(paths) -> list[Path]:
+    """Object folders under ``paths``: a folder with a URDF is an object, any other
+    folder is searched recursively for ``mobility.urdf`` files."""
+    out: list[Path] = []
+    for p in map(Path, paths):
+        try:
+            find_urdf(p)
+            out.append(p)
+            continue
+        except FileNotFoundError:
+            pass
+        if p.is_dir():
+            out += sorted(u.parent for u in p.rglob("mobility.urdf") if not u.parent.name.startswith(".tmp-"))
+        else:
+            raise FileNotFoundError(f"{p}: not an object folder")
+    return out
+
+
+def validate_folder(folder, tol: Tolerances = Tolerances(), simulate: bool = True, sim_options=None,
+                    seed: int = 0) -> tuple[Report, dict]:
+    """Validate the object folder ``folder``.
+
+    Parameters
+    ----------
+    folder : path
+    tol : Tolerances
+    simulate : bool
+        Run the pybullet / MuJoCo checks on the URDF.
+    sim_options : artipg.validate.sim.SimOptions, optional
+    seed : int
+        Seed of the surface samples of mesh geometry.
+
+    Returns
+    -------
+    report : Report
+    meta : dict
+        ``{"path", "urdf", "geometry": "exact" | "mesh", "category", "seed"}``.
+    """
+    folder = Path(folder)
+    urdf = find_urdf(folder)
+    meta = {"path": str(folder), "urdf": str(urdf), "geometry": "mesh", "category": None, "seed": None}
+    obj = _regenerate(folder / "annotation.json", urdf) if (folder / "annotation.json").is_file() else None
+    if obj is not None:
+        from artipg.validate.api import check_object
+
+        report = check_object(obj, tol)
+        meta.update(geometry="exact", category=obj.category, seed=int(obj.seed))
+    else:
+        kin, pieces = load_urdf_geometry(urdf, np.random.default_rng([seed, 0x6E0]))
+        report = Report(run_checks(kin, pieces, tol), tol.to_json())
+    if simulate:
+        from artipg.validate.sim import SimOptions, simulate_urdf
+
+        report.checks["simulator"] = simulate_urdf(urdf, sim_options or SimOptions())
+    return report, meta
+
+
+# ------------------------------------------------------------------ artipg folders
+
+def _regenerate(annotation: Path, urdf: Path):
+    """The artipg object a folder was exported from, or None when it cannot be
+    reproduced exactly (unknown category, other version, edited URDF)."""
+    import artipg
+
+    try:
+        ann = json.loads(annotation.read_text())
+        if ann.get("category") not in artipg.categories() or ann.get("version") != artipg.__version__:
+            return None
+        rep = (ann.get("validation") or {}).get("repair") or {}
+        seed = int(rep.get("source_seed", ann["seed"]))
+        overrides = {k: v["value"] for k, v in ann.get("parameters", {}).items() if v.get("kind") != "fixed"}
+        obj = artipg.generate(ann["category"], seed, overrides)
+    except (ValueError, KeyError, TypeError):
+        return None
+    kin = _urdf_kinematics(_load_robot(urdf))[0]
+    ours = Kinematics.of(obj)
+    if sorted(kin.names) != sorted(ours.names):
+        return None
+    idx = {n: i for i, n in enumerate(kin.names)}
+    for i, n in enumerate(ours.names):
+        k = idx[n]
+        if ours.joint_types[i] != kin.joint_types[k] or not np.allclose(ours.origin[i], kin.origin[k], atol=MATCH_TOL):
+            return None
+        if ours.joint_types[i] in ("revolute", "prismatic") and not np.allclose(ours.limits[i], kin.limits[k],
+                                                                              atol=MATCH_TOL):
+            return None
+    obj.seed = int(ann["seed"])
+    return obj
+
+
+# ------------------------------------------------------------------ URDF + meshes
+
+def _load_robot(urdf: Path):
+    import yourdfpy
+
+    return yourdfpy.URDF.load(str(urdf), build_scene_graph=False, load_meshes=False,
+                              build_collision_scene_graph=False, load_collision_meshes=False).robot
+
+
+def _urdf_kinematics(robot) -> tuple[Kinematics, dict]:
+    """Kinematic tree of a yourdfpy robot model, root first; and link name -> index."""
+    children = {j.child for j in robot.joints}
+    by_child = {j.child: j for j in robot.joints}
+    roots = [lk.name for lk in robot.links if lk.name not in children]
+    if len(roots) != 1:
+        raise ValueError(f"URDF must have one root link, found {roots}")
+    order, todo = [], [roots[0]]
+    kids: dict = {}
+    for j in robot.joints:
+        kids.setdefault(j.parent, []).append(j.child)
+    while todo:
+        n = todo.pop(0)
+        order.append(n)
+        todo += kids.get(n, [])
+    idx = {n: i for i, n in enumerate(order)}
+    L = len(order)
+    parent = np.full(L, -1, dtype=np.int64)
+    origin = np.tile(np.eye(4), (L, 1, 1))
+    axis = np.tile([0.0, 0.0, 1.0], (L, 1))
+    limits = np.zeros((L, 2))
+    jn, jt = [""] * L, ["fixed"] * L
+    for n in order[1:]:
+        j = by_child[n]
+        i = idx[n]
+        parent[i] = idx[j.parent]
+        origin[i] = j.origin if j.origin is not None else np.eye(4)
+        if j.axis is not None:
+            axis[i] = np.asarray(j.axis, dtype=float) / np.linalg.norm(j.axis)
+        jt[i] = j.type if j.type in ("revolute", "prismatic", "continuous") else "fixed"
+        jn[i] = j.name
+        if j.type == "continuous":
+            limits[i] = (-np.inf, np.inf)
+        elif j.limit is not None and j.limit.lower is not None and j.limit.upper is not None:
+            limits[i] = (j.limit.lower, j.limit.upper)
+    return Kinematics(order, parent, jn, jt, origin, axis, limits), idx
+
+
+def load_urdf_geometry(urdf, rng: np.random.Generator) -> tuple[Kinematics, Pieces]:
+    """Kinematics and visual geometry pieces of a URDF file (see module docstring)."""
+    import trimesh
+
+    from artipg.geometry.box import Cuboid
+    from artipg.geometry.revolve import Frustum, Sphere
+
+    urdf = Path(urdf)
+    robot = _load_robot(urdf)
+    kin, idx = _urdf_kinematics(robot)
+    prims, meshes, part_names, part_link = [], [], [], []
+    for link in robot.links:
+        li = idx[link.name]
+        for k, vis in enumerate(link.visuals):
+            T = vis.origin if vis.origin is not None else np.eye(4)
+            g = vis.geometry
+            pi = len(part_names)
+            part_names.append(vis.name or f"{link.name}_visual{k}")
+            part_link.append(li)
+            if g.box is not None:
+                prims.append((li, pi, Cuboid, tuple(np.asarray(g.box.size, dtype=float)), T))
+            elif g.cylinder is not None:
+                prims.append((li, pi, Frustum, (g.cylinder.radius, g.cylinder.radius, g.cylinder.length, 1.0, 1.0), T))
+            elif g.sphere is not None:
+                r = g.sphere.radius
+                prims.append((li, pi, Sphere, (r, -r, r), T))
+            elif g.mesh is not None:
+                path = _mesh_path(urdf, g.mesh.filename)
+                m = trimesh.load(str(path), force="mesh", process=False)
+                if g.mesh.scale is not None:
+                    m.apply_scale(np.broadcast_to(np.asarray(g.mesh.scale, dtype=float), (3,)))
+                parts = m.split(only_watertight=False)
+                if not 1 < len(parts) <= MAX_COMPONENTS or not all(p.is_watertight for p in parts):
+                    parts = [m]
+                for piece in parts:
+                    meshes.append((li, pi, piece, T))
+    M = len(prims) + len(meshes)
+    if M == 0:
+        raise ValueError(f"{urdf}: no visual geometry")
+    width = 5
+    link = np.array([p[0] for p in prims] + [m[0] for m in meshes], dtype=np.int64)
+    part = np.array([p[1] for p in prims] + [m[1] for m in meshes], dtype=np.int64)
+    Ts = np.array([p[4] for p in prims] + [m[3] for m in meshes], dtype=float).reshape(M, 4, 4)
+    geom = [p[2] for p in prims] + [None] * len(meshes)
+    params = np.zeros((M, width))
+    center = np.zeros((M, 3))
+    half = np.zeros((M, 3))
+    for i, p in enumerate(prims):
+        params[i, :len(p[3])] = p[3]
+        b = p[2].bounds(p[3])
+        center[i], half[i] = 0.5 * (b[0] + b[1]), 0.5 * (b[1] - b[0])
+    mesh_map = {}
+    for k, (_, _, m, _) in enumerate(meshes):
+        i = len(prims) + k
+        mesh_map[i] = m
+        b = m.bounds
+        center[i], half[i] = 0.5 * (b[0] + b[1]), 0.5 * (b[1] - b[0])
+    return kin, Pieces(link, part, Ts, center, half, geom, params, part_names, np.array(part_link), rng, mesh_map)
+
+
+def _mesh_path(urdf: Path, filename: str) -> Path:
+    f = filename
+    if f.startswith("package://"):
+        f = f.split("/", 3)[-1] if f.count("/") >= 3 else f[len("package://"):]
+    if f.startswith("file://"):
+        f = f[len("file://"):]
+    p = Path(f)
+    p = p if p.is_absolute() else urdf.parent / p
+    if not p.is_file():
+        raise FileNotFoundError(f"{urdf}: mesh {filename} not found")
+    return p
