@@ -9,7 +9,7 @@ Prints, per category, median milliseconds per object for
 (d) one completion sample: 16384 labelled points + 8 partial views of 2048 points
     (320 x 240 ray casts).
 
-Usage: python benchmarks/bench_annotate.py [--categories a b] [--seeds 50] [--view-seeds 10]
+Usage: python benchmarks/bench_annotate.py [--categories a b] [--seeds 50] [--view-seeds 10] [--cpu]
 """
 
 from __future__ import annotations
@@ -25,12 +25,15 @@ from artipg.annotate.labels import part_frames, point_labels
 from artipg.annotate.views import hemisphere_cameras, partial_views, render_view
 
 
+CLOCK = time.perf_counter
+
+
 def _median_ms(fn, items) -> float:
     times = []
     for it in items:
-        t0 = time.perf_counter()
+        t0 = CLOCK()
         fn(it)
-        times.append(time.perf_counter() - t0)
+        times.append(CLOCK() - t0)
     return 1e3 * float(np.median(times))
 
 
@@ -57,10 +60,15 @@ def main() -> None:
     ap.add_argument("--categories", nargs="*", default=None)
     ap.add_argument("--seeds", type=int, default=50, help="objects per category for (a) and (b)")
     ap.add_argument("--view-seeds", type=int, default=10, help="objects per category for (c) and (d)")
+    ap.add_argument("--cpu", action="store_true",
+                    help="time with the process CPU clock (steadier on a loaded machine; single-threaded code)")
     args = ap.parse_args()
+    global CLOCK
+    if args.cpu:
+        CLOCK = time.process_time
     cats = args.categories or artipg.categories()
     print(f"artipg {artipg.__version__}, {len(cats)} categories, medians over {args.seeds} objects "
-          f"({args.view_seeds} for views), one process")
+          f"({args.view_seeds} for views), one process, {'CPU' if args.cpu else 'wall'} clock")
     print(f"{'category':<20}{'(a) labels ms':>14}{'(b) grasps ms':>15}{'(c) view ms':>13}{'(d) sample ms':>15}")
     rows = []
     for c in cats:

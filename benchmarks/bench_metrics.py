@@ -9,6 +9,9 @@ Prints wall-clock medians over ``--repeats`` runs of:
     points; (e) numpy PointNet features of 200 clouds; (f) reading object folders
     (URDF + meshes, and points.npz).
 
+Wall-clock seconds depend on what else runs on the machine; CPU seconds (summed over
+threads) do much less, and on an idle machine wall ~ CPU / threads for the matrices.
+
 Clouds are rest-pose samples of registered categories (round robin over categories,
 consecutive seeds), bounding-box normalised as ``artipg eval`` does.
 
@@ -37,13 +40,15 @@ def _clouds(n_objects: int, n_points: int, first_seed: int) -> np.ndarray:
         for i in range(n_objects)]))
 
 
-def _median_s(fn, repeats: int) -> float:
-    times = []
+def _median_s(fn, repeats: int) -> tuple[float, float]:
+    """Median wall-clock seconds and median CPU seconds (all threads) of ``fn()``."""
+    times, cpu = [], []
     for _ in range(repeats):
-        t0 = time.perf_counter()
+        t0, c0 = time.perf_counter(), time.process_time()
         fn()
         times.append(time.perf_counter() - t0)
-    return float(np.median(times))
+        cpu.append(time.process_time() - c0)
+    return float(np.median(times)), float(np.median(cpu))
 
 
 def main() -> None:
@@ -61,32 +66,33 @@ def main() -> None:
     B = _clouds(n, m, 100_000)
 
     if not args.skip_single:
-        t1 = _median_s(lambda: chamfer_matrix(A, workers=1), args.repeats)
-        print(f"(a) {n} x {n} Chamfer matrix, one set, 1 thread : {t1:7.2f} s")
-    tw = _median_s(lambda: chamfer_matrix(A, workers=w), args.repeats)
-    print(f"(a) {n} x {n} Chamfer matrix, one set, {w} threads: {tw:7.2f} s")
-    tc = _median_s(lambda: chamfer_matrix(A, B, workers=w), args.repeats)
-    print(f"(b) {n} x {n} Chamfer matrix, two sets, {w} threads: {tc:7.2f} s")
-    te = _median_s(lambda: chamfer_matrix(list(A) + list(B), workers=w), args.repeats)
-    print(f"(c) eval {n} vs {n} (union {2 * n} x {2 * n}), {w} threads: {te:7.2f} s")
+        t1, c1 = _median_s(lambda: chamfer_matrix(A, workers=1), args.repeats)
+        print(f"(a) {n} x {n} Chamfer matrix, one set, 1 thread : {t1:7.2f} s wall, {c1:7.2f} s CPU")
+    tw, cw = _median_s(lambda: chamfer_matrix(A, workers=w), args.repeats)
+    print(f"(a) {n} x {n} Chamfer matrix, one set, {w} threads: {tw:7.2f} s wall, {cw:7.2f} s CPU")
+    tc, cc = _median_s(lambda: chamfer_matrix(A, B, workers=w), args.repeats)
+    print(f"(b) {n} x {n} Chamfer matrix, two sets, {w} threads: {tc:7.2f} s wall, {cc:7.2f} s CPU")
+    te, ce = _median_s(lambda: chamfer_matrix(list(A) + list(B), workers=w), args.repeats)
+    print(f"(c) eval {n} vs {n} (union {2 * n} x {2 * n}), {w} threads: {te:7.2f} s wall, "
+          f"{ce:7.2f} s CPU")
     if not args.skip_single:
         pairs = [(i, (i * 7 + 3) % n) for i in range(200)]
-        t0 = time.perf_counter()
+        c0 = time.process_time()
         for i, j in pairs:
             chamfer_distance(A[i], B[j])
-        per_pair = (time.perf_counter() - t0) / len(pairs)
-        print(f"    naive per-pair loop (cKDTree per pair, 1 thread): {per_pair * 1e3:.1f} ms/pair -> "
-              f"{per_pair * n * n:.0f} s for {n} x {n}")
+        per_pair = (time.process_time() - c0) / len(pairs)
+        print(f"    naive per-pair loop (cKDTree per pair, 1 thread): {per_pair * 1e3:.1f} ms CPU/pair -> "
+              f"{per_pair * n * (n - 1) / 2:.0f} s CPU for the symmetric {n} x {n}")
 
     for k in (1024, 2048):
         if k <= m:
-            t = _median_s(lambda: earth_movers_distance(A[0], B[0], max_points=k), args.repeats)
-            print(f"(d) EMD, exact assignment of {k} points: {t:7.2f} s per pair")
+            t, _ = _median_s(lambda: earth_movers_distance(A[0], B[0], max_points=k), args.repeats)
+            print(f"(d) EMD, exact assignment of {k} points: {t:7.2f} s wall per pair")
 
     enc = load_default_encoder()
     if enc is not None:
-        t = _median_s(lambda: enc.features(A), args.repeats)
-        print(f"(e) PointNet features (numpy) of {n} clouds: {t:7.2f} s")
+        t, _ = _median_s(lambda: enc.features(A), args.repeats)
+        print(f"(e) PointNet features (numpy) of {n} clouds: {t:7.2f} s wall")
     else:
         print("(e) no shipped encoder; skipped")
 
@@ -94,8 +100,8 @@ def main() -> None:
         cat = artipg.categories()[0]
         folders = [export_object(artipg.generate(cat, s), os.path.join(tmp, str(s)), n_points=m) for s in range(10)]
         for src in ("mesh", "npz"):
-            t = _median_s(lambda: [read_object(f, m, source=src) for f in folders], args.repeats) / len(folders)
-            print(f"(f) read one {cat} folder, points from {src}: {t * 1e3:7.1f} ms")
+            t = _median_s(lambda: [read_object(f, m, source=src) for f in folders], args.repeats)[0] / len(folders)
+            print(f"(f) read one {cat} folder, points from {src}: {t * 1e3:7.1f} ms wall")
 
 
 if __name__ == "__main__":

@@ -134,9 +134,10 @@ def test_parts_know_the_parameters_that_built_them(category):
     for seed in SEEDS:
         obj = artipg.generate(category, seed)
         names = list(obj.params)
-        spans = [p.param_span for p in obj.parts]
+        spans = sorted(p.param_span for p in obj.parts)  # add order
         assert all(0 <= a <= b <= len(names) for a, b in spans)
-        assert all(spans[i][1] <= spans[i + 1][0] or spans[i + 1][0] == spans[i][1] for i in range(len(spans) - 1))
+        # consecutive adds tile the record: every draw before the last add belongs to one part
+        assert spans[0][0] == 0 and all(spans[i][1] == spans[i + 1][0] for i in range(len(spans) - 1))
         blame = part_params(obj)
         assert any(blame.values()), "no part records any parameter"
 
@@ -223,8 +224,8 @@ def test_lid_sunk_into_its_pot_is_caught(category):
     link.joint.origin = translation(0.0, 0.0, -0.01) @ link.joint.origin  # 1 cm down
     r = check_object(obj)
     assert "penetration" in _failed(r)
-    # the depth is capped by the wall it sinks into (a few mm), not by the 1 cm drop
-    assert any(link.name in i.links and i.amount > 0.002 for i in r.checks["penetration"].issues)
+    # the depth is capped by the wall it sinks into (half its thickness), not by the drop
+    assert any(link.name in i.links and i.amount > 0.001 for i in r.checks["penetration"].issues)
 
 
 # ---------------------------------------------------------------- broken, then repaired
@@ -234,7 +235,7 @@ W, D, H = 0.5, 0.4, 0.6
 
 def _cabinet(ctx):
     root = ctx.builder.create_link("base")
-    body = carcass(ctx.p.scope("body"), D, W, H)
+    body = carcass(ctx.p, D, W, H)
     pose = translation(0, 0, H / 2)
     root.add(body, pose)
     return root, body, pose
@@ -245,7 +246,7 @@ def _door_cabinet(with_defect: str):
 
     def door(ctx):
         root, body, pose = ctx.out["body"]
-        q = ctx.p.scope("door")
+        q = ctx.p  # names: door.*
         lo = body.anchor("cavity_lo")
         w, h = W - 0.003, H - 0.003
         panel = slab_door(q, w, h)
@@ -267,7 +268,7 @@ def _door_cabinet(with_defect: str):
 def _drawer_cabinet():
     def drawer(ctx):
         root, body, pose = ctx.out["body"]
-        q = ctx.p.scope("drawer")
+        q = ctx.p  # names: drawer.*
         lo, hi = body.anchor("cavity_lo"), body.anchor("cavity_hi")
         c = q.uniform("clearance", -0.003, 0.004)  # per side; negative: wider than the opening
         centre = (0.5 * (lo[1] + hi[1]), 0.5 * (lo[2] + hi[2]))
@@ -282,13 +283,13 @@ def _drawer_cabinet():
 def _pot():
     def body(ctx):
         root = ctx.builder.create_link("base")
-        shell = cylindrical_shell(ctx.p.scope("body"), 0.12, 0.15)
+        shell = cylindrical_shell(ctx.p, 0.12, 0.15)
         root.add(shell)
         return root, shell
 
     def lid(ctx):
         root, shell = ctx.out["body"]
-        q = ctx.p.scope("lid")
+        q = ctx.p  # names: lid.*
         t = q.uniform("thickness", 0.004, 0.008)
         seat = q.uniform("seat", -0.015, 0.0)  # lid bottom relative to the rim: < 0 sinks it
         r = 0.12 + q.uniform("overhang", 0.002, 0.01)
@@ -332,7 +333,7 @@ def test_unrepairable_object_is_replaced_from_a_derived_seed():
     # a lid that can never clear its pot: the seat range excludes valid values
     def lid(ctx):
         root = ctx.builder.create_link("base")
-        root.add(cylindrical_shell(ctx.p.scope("body"), 0.12, 0.15))
+        root.add(cylindrical_shell(ctx.p, 0.12, 0.15))
         link = ctx.builder.create_link("lid", root)
         sunk = ctx.p.flag("sunk", 0.5)
         link.set_joint("prismatic", translation(0, 0, 0.14 if sunk else 0.15), axis=(0, 0, 1), limits=(0.0, 0.1))
@@ -442,14 +443,14 @@ def test_validate_command_on_artipg_and_partnet_style_folders(tmp_path):
 
 
 def test_simulators_catch_a_hollow_body_exported_as_one_hull(tmp_path):
-    """The gotcha the collision export avoids: a pot body as one convex hull swallows its lid."""
+    """The gotcha the collision export avoids: a carcass as one convex hull swallows its drawer."""
     import trimesh
 
     from artipg.validate.sim import simulate_urdf
 
-    obj = _pot().generate(0, {"lid.seat": 0.0})
+    obj = _drawer_cabinet().generate(0, {"drawer.clearance": 0.004})
     assert check_object(obj).ok
-    dest = export_object(obj, tmp_path / "pot", n_points=0)
+    dest = export_object(obj, tmp_path / "cabinet", n_points=0)
     assert simulate_urdf(dest / "mobility.urdf").ok
     tree = ET.parse(dest / "mobility.urdf")
     base = next(lk for lk in tree.getroot().iter("link") if lk.get("name") == "base_0")
@@ -462,5 +463,5 @@ def test_simulators_catch_a_hollow_body_exported_as_one_hull(tmp_path):
     tree.write(dest / "mobility.urdf")
     r = simulate_urdf(dest / "mobility.urdf")
     assert not r.ok
-    kinds = {i.kind for i in r.issues}
-    assert "sim_rest_penetration" in kinds
+    found = {(i.kind, i.detail.split(":")[0]) for i in r.issues}
+    assert {("sim_rest_penetration", "pybullet"), ("sim_rest_penetration", "mujoco")} <= found

@@ -28,8 +28,8 @@ from artipg.vocabulary import ACTIONABLE_CLASSES, AFFORDANCES
 #: is a requirement met by any one of its affordances.
 REQUIRED_AFFORDANCES: dict[str, tuple[tuple[str, ...], ...]] = {
     "none": (),
-    "line_fixed_handle": (("grasp",), ("pull",)),
-    "round_fixed_handle": (("grasp",), ("pull",)),
+    "line_fixed_handle": (("grasp",), ("pull", "lift")),
+    "round_fixed_handle": (("grasp",), ("pull", "lift")),
     "slider_button": (("press",),),
     "hinge_door": (("push", "pull"),),
     "slider_drawer": (("push", "pull"),),

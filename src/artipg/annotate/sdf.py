@@ -127,28 +127,3 @@ def object_sdf(obj, x: np.ndarray, qpos=None, max_dist: float = np.inf, parts=No
     best[order] = bs
     arg[order] = ba
     return best, arg
-    L = obj.link_poses(qpos)
-    Winv = rigid_inverse(L[table.prim_link] @ table.prim_T)
-    geoms, params = _primitive_params(obj)
-    for k in np.flatnonzero(near):
-        if np.isfinite(max_dist):
-            m = np.all((x >= B[k, 0] - max_dist) & (x <= B[k, 1] + max_dist), axis=1)
-            idx = np.flatnonzero(m)
-            if not len(idx):
-                continue
-            xs = x[idx]
-        else:
-            idx = slice(None)
-            xs = x
-        local = xs @ Winv[k, :3, :3].T + Winv[k, :3, 3]
-        d = geoms[k].sdf(params[k], local)
-        if unsigned:
-            d = np.abs(d)
-        better = d < best[idx]
-        if isinstance(idx, slice):
-            best = np.where(better, d, best)
-            arg = np.where(better, k, arg)
-        else:
-            best[idx[better]] = d[better]
-            arg[idx[better]] = k
-    return best, arg

@@ -7,7 +7,9 @@ to ``_MODULES`` below (a test checks every module here is registered).
 from __future__ import annotations
 
 from artipg.categories import storage_furniture, eyeglasses, stapler, bottle, switch, bucket, microwave, faucet, kitchen_pot, kettle
+from artipg.categories import safe, box, laptop, door, window, trash_can
 
-_MODULES = (storage_furniture, eyeglasses, stapler, bottle, switch, bucket, microwave, faucet, kitchen_pot, kettle)
+_MODULES = (storage_furniture, eyeglasses, stapler, bottle, switch, bucket, microwave, faucet, kitchen_pot, kettle,
+            safe, box, laptop, door, window, trash_can)
 
 REGISTRY = {m.RULE.name: m.RULE for m in _MODULES}

@@ -70,7 +70,7 @@ def bail(ctx):
     lp = ctx.out["lid"]
     p = ctx.p
     rl = p.uniform("lug_radius", 0.006, 0.012)
-    skirt = 0.0 if lp is None else -lp.bounds()[0, 2]  # the lugs stay below a lid's skirt
+    skirt = 0.0 if lp is None else -lp.anchor("hinge")[2]  # the lugs stay below a lid's skirt
     drop = p.uniform("ear_drop", max(0.02, skirt + rl + 0.003), 0.05 + skirt)
     zp = H - drop
     # obstacle above the pivot plane: the rim (R is the circumradius for prisms) and the
@@ -79,13 +79,12 @@ def bail(ctx):
     rise = drop if lp is None else drop + lp.anchor("top")[2]
     span = reach + p.uniform("lug_reach", 0.012, 0.025)
     handle = ctx.choose("template", BAILS)(p, span, clear=(reach, rise))
-    wire = float(handle.primitives[0].params[0])
     ear = ear_lugs(p.scope("ears"), wall_y(zp), handle.anchor("pin_+y")[1], radius=rl)
     root.add(ear, translation(0, 0, zp))
     # rest: folded down to the back, a little past horizontal if the body allows it
-    top = handle.anchor("apex")[2]
+    top, inner = handle.anchor("apex")[2], handle.anchor("apex_inner")[2]
     fold = math.pi / 2 + min(p.uniform("droop", 0.0, 0.25), math.asin(min(1.0, zp / top)),
-                             math.acos(min(1.0, (R + wire + CLEARANCE) / top)))
+                             math.acos(min(1.0, (R + CLEARANCE) / inner)))
     link = ctx.builder.create_link("handle", root)
     link.set_joint("revolute", translation(0, 0, zp) @ rot_y(fold), axis=(0.0, -1.0, 0.0), limits=(0.0, 2 * fold))
     link.add(handle)

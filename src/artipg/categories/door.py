@@ -17,12 +17,13 @@ Joints: 1-9 movable. Sizes (metres): leaves 0.7-0.95 x 1.95-2.1 (double doors
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 from artipg.geometry import cuboid_between, cylinder
 from artipg.geometry.transforms import rot_y, rot_z, translation
 from artipg.model.part import Part
 from artipg.rules import Category, Slot
-from artipg.templates.frames import door_frame, glazed_panel, panel_leaf, swing_clearance
+from artipg.templates.frames import barn_hardware, door_frame, glazed_panel, panel_leaf, swing_clearance
 from artipg.templates.handles import arch_handle, flat_bar_handle
 from artipg.templates.mounting import free_edge_yz, mount_hinged, mount_sliding
 from artipg.templates.panels import slab_door
@@ -77,11 +78,12 @@ def leaves(ctx):
         return _barn(ctx, root, d)
     sides = ("+y", "-y") if d["n"] == 2 else (p.choice("hinge", ("+y", "-y")),)
     lim = p.uniform("limit", 1.45, 1.9)
-    tmpl, out = ctx.choose("leaf", LEAVES[ctx.sub]), []
-    for i, side in enumerate(sides):
+    leaf0, glass0 = _leaf(ctx.choose("leaf", LEAVES[ctx.sub]), p.scope("leaf"), W, H, t)
+    out = []
+    for i, side in enumerate(sides):  # a pair of doors has two identical leaves
         s = 1.0 if side == "+y" else -1.0
         cy = s * (d["Wo"] / 2 - d["ch"] - W / 2)
-        leaf, glass = _leaf(tmpl, p.scope(f"leaf{i}"), W, H, t)
+        leaf, glass = replace(leaf0), glass0 and replace(glass0)
         link = mount_hinged(ctx.builder, root, leaf, front_x=t, center_yz=(cy, d["under"] + H / 2), size_yz=(W, H),
                             side=side, limits=(0.0, lim), name="leaf")
         if glass is not None:
@@ -117,33 +119,18 @@ def hardware(ctx):
 
 def _barn(ctx, root, d):
     p, t, W, H = ctx.p, d["t"], d["W"], d["H"]
-    hdr_t = p.uniform("header_thickness", 0.015, 0.025)
-    xb = d["x_wall"] - hdr_t - p.uniform("wall_gap", 0.005, 0.015)  # leaf back face
-    st, wt, e = p.uniform("strap_thickness", 0.005, 0.008), p.uniform("wheel_width", 0.012, 0.02), 0.003
-    R, rt, rh = p.uniform("wheel_radius", 0.03, 0.05), p.uniform("rail_thickness", 0.006, 0.01), 0.03
-    xs = xb - t - st  # strap front face
-    xr = xs + st + e + wt / 2  # wheel / rail centre
-    zt = d["under"] + H
-    zr = zt + p.uniform("rail_gap", 0.03, 0.06) + rh  # rail top
     travel, s = W + p.uniform("extra_travel", 0.0, 0.05), p.choice("direction", (1.0, -1.0))
-    y0, y1 = sorted((-s * (W / 2 + 0.05), s * (W / 2 + travel + 0.05)))
-    hf = d["x_wall"] - hdr_t
-    prims = [cuboid_between((hf, y0, d["top"] - 0.05), (d["x_wall"], y1, zr + 2 * R + 0.03), role="header"),
-             cuboid_between((xr - rt / 2, y0, zr - rh), (xr + rt / 2, y1, zr), role="rail")]
-    for k in range(4):
-        y = y0 + 0.04 + k * (y1 - y0 - 0.08) / 3
-        prims.append(cylinder(0.008, hf - xr, translation((xr + hf) / 2, y, zr - rh / 2) @ rot_y(math.pi / 2),
-                              role="spacer"))
-    root.add(Part("frame", "barn_rail", prims))
-    leaf, _ = _leaf(ctx.choose("leaf", LEAVES[ctx.sub]), p.scope("leaf0"), W, H, t)
-    link = mount_sliding(ctx.builder, root, leaf, origin=translation(xb, 0.0, d["under"] + H / 2),
-                         axis=(0.0, s, 0.0), limits=(0.0, travel), name="leaf")
-    hw, zc = [], zr + R - zt + H / 2  # wheel centre height in the leaf's frame
-    for y in (-0.32 * W, 0.32 * W):  # strap on the leaf face, axle, roller on the rail
-        hw += [cuboid_between((-t - st, y - 0.02, H / 2 - 0.12), (-t, y + 0.02, zc + 0.02), role="strap"),
-               cylinder(0.006, e + 0.002, translation(-t + e / 2, y, zc) @ rot_y(math.pi / 2), role="axle"),
-               cylinder(R, wt, translation(xr - xb, y, zc) @ rot_y(math.pi / 2), role="wheel")]
-    link.add(Part("hinge", "barn_hanger", hw))
+    span = sorted((-s * (W / 2 + 0.05), s * (W / 2 + travel + 0.05)))
+    zt = d["under"] + H  # leaf top
+    track, hangers = barn_hardware(p.scope("track"), W, t, span, zt - d["top"] + 0.05)
+    xb = d["x_wall"] - track.anchor("wall")[0]  # leaf back face
+    root.add(track, translation(xb, 0.0, zt))
+    y = s * (d["Wo"] + d["top"] - d["Ho"]) / 2  # a floor guide on the jamb the leaf slides to
+    root.add(Part("frame", "floor_guide", [cuboid_between((xb, y - 0.01, 0.0), (d["x_wall"], y + 0.01, 0.05))]))
+    leaf, _ = _leaf(ctx.choose("leaf", LEAVES[ctx.sub]), p.scope("leaf"), W, H, t)
+    link = mount_sliding(ctx.builder, root, leaf, origin=translation(xb, 0.0, zt - H / 2), axis=(0.0, s, 0.0),
+                         limits=(0.0, travel), name="leaf")
+    link.add(hangers, translation(0, 0, H / 2))
     pull = ctx.choose("handle", PULLS)(p.scope("pull"), length=p.uniform("pull_length", 0.2, 0.35))
     py = leaf.anchors.get("stile", (0.0, W / 2 - 0.08, 0.0))[1]
     link.add(pull, translation(-t, -s * py, p.uniform("pull_height", 0.95, 1.1) - d["under"] - H / 2))

@@ -8,7 +8,7 @@ Joints: two revolute temple hinges about vertical axes; 0 is open (as worn) and 
 upper limit (pi/2) folds the temple flat behind the front. The left temple folds
 closer to the lenses and the right one stacks on it, as on real glasses; temples end
 short of the opposite hinge so either folds with the other one open.
-Sizes (metres): front 0.12-0.16 wide, lenses 0.038-0.06 wide, temples 0.11-0.14 long.
+Sizes (metres): front 0.12-0.16 wide, lenses 0.042-0.056 wide, temples 0.11-0.15 long.
 """
 
 from __future__ import annotations
@@ -21,9 +21,9 @@ from artipg.templates.eyewear import FRONTS, TEMPLE_SIZES, TEMPLES, full_rim_fro
 
 # sub-category -> lens shape, lens width, lens height (None: round), bridge, front and temple weights
 SUBS = {
-    "round": ("round", (0.038, 0.05), None, (0.016, 0.022), FRONTS, {t: w for t, w in TEMPLES.items() if w > 1}),
+    "round": ("round", (0.042, 0.05), None, (0.017, 0.022), FRONTS, {t: w for t, w in TEMPLES.items() if w > 1}),
     "rectangular": ("rect", (0.045, 0.055), (0.028, 0.04), (0.015, 0.021), FRONTS, TEMPLES),
-    "sunglasses": ("rect", (0.05, 0.058), (0.038, 0.048), (0.014, 0.02), {full_rim_front: 1.0}, TEMPLES),
+    "sunglasses": ("rect", (0.05, 0.056), (0.038, 0.048), (0.014, 0.02), {full_rim_front: 1.0}, TEMPLES),
     "reading": ("rect", (0.042, 0.05), (0.022, 0.03), (0.016, 0.022),
                 {half_rim_front: 2.0, rimless_front: 2.0, full_rim_front: 1.0}, TEMPLES),
 }

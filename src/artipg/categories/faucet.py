@@ -28,8 +28,8 @@ from artipg.templates.spouts import (COLLAR_SPOUTS, DECKS, TOP_SPOUTS, arc_spout
 SUBS = {
     "single_lever": ((0.018, 0.028), (0.1, 0.22), None),
     "two_handle": ((0.014, 0.022), (0.015, 0.05), (0.04, 0.15)),
-    "pull_out": ((0.02, 0.03), (0.06, 0.12), (0.12, 0.25)),
-    "gooseneck": ((0.018, 0.028), (0.06, 0.12), (0.1, 0.25)),
+    "pull_out": ((0.02, 0.03), (0.06, 0.11), (0.1, 0.19)),
+    "gooseneck": ((0.018, 0.028), (0.06, 0.11), (0.08, 0.19)),
 }
 SPOUTS = {"pull_out": {gooseneck_spout: 2.0, arc_spout: 1.0}, "gooseneck": {gooseneck_spout: 1.0}}  # else TOP_SPOUTS
 C = 0.006  # clearance between parts that move past each other
@@ -48,15 +48,15 @@ def base(ctx):
         # one plate under all three (separate escutcheons would be disconnected parts)
         deck = root.add(rect_deck(p.scope("deck"), radius=max(rc, rv) + p.uniform("rim", 0.005, 0.012),
                                   length=spread + 2 * rv + p.uniform("end_margin", 0.01, 0.03)))
-        zd = [deck.anchor("top")[2]] * 3
-        for i, s in enumerate((1, -1)):
-            root.add(column(p.scope(f"valve{i}"), rv, hv), translation(0, s * spread / 2, zd[i + 1]))
-            valves.append((translation(0, s * spread / 2, zd[i + 1] + hv), s, spread / 2 - rc - C))
+        zd = deck.anchor("top")[2]
+        for i, s in enumerate((1, -1)):  # (valve top frame, side, largest handle reach)
+            root.add(column(p.scope(f"valve{i}"), rv, hv), translation(0, s * spread / 2, zd))
+            valves.append((translation(0, s * spread / 2, zd + hv), s, spread / 2 - rc - C))
     else:
         deck = root.add(ctx.choose("deck", DECKS)(p.scope("deck"), radius=rc + p.uniform("rim", 0.008, 0.02)))
-        zd = [deck.anchor("top")[2]]
-    root.add(column(p.scope("column"), rc, hc), translation(0, 0, zd[0]))
-    return root, rc, translation(0, 0, zd[0] + hc), valves, hc
+        zd = deck.anchor("top")[2]
+    root.add(column(p.scope("column"), rc, hc), translation(0, 0, zd))
+    return root, rc, translation(0, 0, zd + hc), valves, hc
 
 
 def levers(ctx):
@@ -73,14 +73,11 @@ def levers(ctx):
         tmpl = ctx.choose("handle", VALVE_HANDLES)
         turn = p.uniform("turn", 1.2, 1.6)
         h0 = tmpl(p.scope("handle"), max_reach=valves[0][2])
-        hi = 0.0
         for T, s, _ in valves:  # a matching pair: the second handle is a copy of the first
-            h = replace(h0)
             link = b.create_link("lever", root)
             link.set_joint("revolute", T, axis=(0.0, 0.0, -s), limits=(0.0, turn))
-            link.add(h)
-            hi = max(hi, T[2, 3] + h.bounds()[1, 2])
-        return hi - top[2, 3]  # handle tops above the spout hub
+            link.add(replace(h0))
+        return valves[0][0][2, 3] + h0.bounds()[1, 2] - top[2, 3]  # handle tops above the spout hub
     lv = side_lever(p)
     zm = -p.uniform("lever_drop", 0.012, 0.025)
     link = b.create_link("lever", root)
@@ -93,32 +90,33 @@ def levers(ctx):
 def spout(ctx):
     root, rc, top, _, hc = ctx.out["base"]
     p, b = ctx.p, ctx.builder
+    r = min(rc, p.uniform("tube_radius", 0.008, 0.014))
     if ctx.sub == "single_lever":
         sp = ctx.choose("template", COLLAR_SPOUTS)(p, rc, max_tip=0.25 * hc)
         z = -p.uniform("collar_drop", 0.005, 0.3 * hc - 0.02) - sp.anchor("collar_top")[2]
         origin = top @ translation(0, 0, z)
     else:
         low = max(ctx.out["levers"], 0.0) + C
-        r, rise = min(rc, p.uniform("tube_radius", 0.008, 0.014)), p.uniform("rise", *SUBS[ctx.sub][2])
+        rise = p.uniform("rise", *SUBS[ctx.sub][2])
         sp = ctx.choose("template", SPOUTS.get(ctx.sub, TOP_SPOUTS))(p.scope("tube"), radius=r, low=low, rise=rise)
         origin = top
     kind = p.choice("swivel", {"fixed": 1.0, "revolute": 1.0, "continuous": 0.6})
     if kind == "fixed":
         root.add(sp, origin)
-        return root, origin, sp
+        return root, origin, sp, r
     link = b.create_link("spout", root)
     a = p.uniform("swivel_angle", 0.6, 1.6)
     link.set_joint(kind, origin, axis=(0.0, 0.0, 1.0), limits=(-a, a))
     link.add(sp)
-    return link, translation(0, 0, 0), sp
+    return link, translation(0, 0, 0), sp, r
 
 
 def head(ctx):
     if ctx.sub != "pull_out":
         return
-    link, T, sp = ctx.out["spout"]
+    link, T, sp, r = ctx.out["spout"]
     o, d = sp.anchor("outlet"), sp.anchor("outlet_dir")
-    hd = spray_head(ctx.p, float(sp.primitives[0].params[0]))
+    hd = spray_head(ctx.p, r)
     L = hd.anchor("length")[2]
     z_out = (ctx.out["base"][2] @ [*o, 1.0])[2]  # outlet height above the counter
     room = (z_out - 0.02) / max(-d[2], 1e-3) - L

@@ -2,16 +2,17 @@
 
 Parts: a body closed at the top but for a filling opening with a collar (straight or
 gently tapered, wide-based cone, or round belly), on a power base for electric ones;
-a lid on the collar; a spout at the front (-x: a short beak, a straight cone, or a
-thin gooseneck; stovetop ones may carry a whistle cap); a handle: a side C handle at
-the back (round tube, moulded D, or thin frame with a grip sleeve) or, on stovetop
-kettles, a swinging wire bail on two lugs or a fixed arch over the lid; electric
-jugs have an on/off lever under the handle and a lid-release button on it, electric
-pour-over kettles a power button on the base.
-Joints: lid revolute about a hinge at the back (electric, 70-95 deg) or prismatic
-along the axis (lifted off, clear of any handle above it); bail revolute about y
-(folds back); whistle cap revolute (flips up); on/off lever revolute (+-17-26 deg);
-buttons prismatic.
+a lid on the collar; a spout on one side (+y: a short beak, a straight cone, or a thin
+gooseneck; stovetop ones may carry a whistle cap) and the handle on the other (-y),
+so the front view (-x) shows the kettle's profile: a side C handle (round tube,
+moulded D, or thin frame with a grip sleeve) or, on stovetop kettles, a swinging wire
+bail on two lugs or a fixed arch over the lid. Electric jugs have an on/off lever
+under the handle and a lid-release button on it, electric pour-over kettles a power
+button on the base.
+Joints: lid revolute about a hinge on the handle side (electric, 70-90 deg) or
+prismatic along the axis (lifted off, clear of any handle above it); bail revolute
+(folds away from the spout); whistle cap revolute (flips up); on/off lever revolute
+(+-17-26 deg); buttons prismatic.
 Sizes (metres): electric 0.18-0.26 tall, radius 0.065-0.085; stovetop 0.13-0.2
 tall, radius 0.08-0.12; pour-over 0.1-0.15 tall, radius 0.055-0.075.
 """
@@ -72,7 +73,7 @@ def handle(ctx):
         zl = min(max(p.uniform("low", 0.12, 0.3) * H, 0.05 if ctx.sub == "electric" else 0.0), zt - 0.045)
         h = ctx.choose("handle", KETTLE_HANDLES)(p, wall_radius(part, zt), zt, wall_radius(part, zl), zl)
         root.add(h, _at(zb))
-        return h, zl, p.uniform("lift", 0.04, 0.12)
+        return h, zl, None
     lift = p.uniform("lift", 0.02, 0.05)
     above = rim + float(lid.anchors["top"][2]) + lift + 0.004  # lifted lid, plus clearance
     d = (wall_radius(part, H) + float(lid.anchors["hinge"][0])) / 2
@@ -97,7 +98,8 @@ def lid(ctx):
     if ctx.sub == "electric":
         mount_lid(ctx.builder, root, lid, rim, mode="flip", limit=ctx.p.uniform("open", 1.2, 1.55))
     else:
-        mount_lid(ctx.builder, root, lid, rim, mode="lift", limit=ctx.out["handle"][2])
+        lift = ctx.out["handle"][2]  # limited by a handle over the lid, else free
+        mount_lid(ctx.builder, root, lid, rim, mode="lift", limit=lift or ctx.p.uniform("lift", 0.04, 0.12))
 
 
 def spout(ctx):

@@ -16,9 +16,10 @@ from __future__ import annotations
 
 from artipg.geometry.transforms import translation
 from artipg.rules import Category, Slot
-from artipg.templates.appliance import appliance_housing, control_panel, display, turntable, vent_grille, window_door
-from artipg.templates.controls import (BUTTONS, KNOBS, button_bezel, dial_knob, mount_button, mount_knob, mount_rocker,
-                                       rect_button, rocker_switch)
+from artipg.templates.appliance import (appliance_housing, control_panel, display, stack_layout, turntable, vent_grille,
+                                        window_door)
+from artipg.templates.controls import (BUTTONS, KNOBS, button_bezel, dial_knob, mount_button, mount_keypad, mount_knob,
+                                       mount_rocker, rect_button, rocker_switch)
 from artipg.templates.handles import arch_handle, edge_pull, flat_bar_handle
 from artipg.templates.mounting import free_edge_yz, handle_pose, mount_hinged
 from artipg.templates.panels import glass_door
@@ -27,9 +28,9 @@ from artipg.templates.supports import bun_feet
 # sub-category -> width, depth, height ranges, bay width fraction, (knobs lo, hi), keypad rows (lo, hi)
 SIZES = {
     "knob_panel": ((0.44, 0.55), (0.32, 0.42), (0.26, 0.33), (0.2, 0.27), (1, 3), (0, 0)),
-    "button_panel": ((0.45, 0.6), (0.33, 0.45), (0.27, 0.35), (0.2, 0.26), (0, 0), (4, 6)),
+    "button_panel": ((0.45, 0.6), (0.33, 0.45), (0.27, 0.35), (0.2, 0.26), (0, 0), (3, 5)),
     "combo": ((0.45, 0.6), (0.33, 0.45), (0.27, 0.35), (0.2, 0.26), (1, 1), (2, 4)),
-    "over_the_range": ((0.74, 0.77), (0.38, 0.43), (0.39, 0.44), (0.17, 0.21), (0, 0), (4, 6)),
+    "over_the_range": ((0.74, 0.77), (0.38, 0.43), (0.39, 0.44), (0.17, 0.21), (0, 0), (4, 5)),
 }
 HANDLES = {flat_bar_handle: 2.0, arch_handle: 1.5, edge_pull: 1.0}  # bar_handle: posts float (see report)
 
@@ -86,16 +87,12 @@ def panel(ctx):
     blocks += [("well", (rows + release) * pitch)] if rows else [("release", pitch)] * release
     blocks += [("knob", 2 * R)] * (n_knobs if sub == "combo" else 0)
     blocks += [("rockers", 0.025)] if sub == "over_the_range" else []
-    f = min(1.0, (ph - m * (len(blocks) + 1)) / sum(h for _, h in blocks))  # shrink to fit
-    front = translation(-D / 2, *pc)
-    z, well, items = ph / 2 - m, None, []
-    for kind, h in blocks:
-        h *= f
+    front, well, items = translation(-D / 2, *pc), None, []
+    for (kind, _), (z, h) in zip(blocks, stack_layout([h for _, h in blocks], ph, m)[0]):
         if kind == "well":
             well = (-pw / 2 + m, pw / 2 - m, z - h, z)
         else:
             items.append((kind, z - h / 2, h))
-        z -= h + m
     root.add(control_panel(p, pw, ph, t, keypad=well), front)
     knob_t = ctx.choose("knob", KNOBS if sub == "knob_panel" else {dial_knob: 1.0}) if n_knobs else None
     spin = p.flag("continuous", 0.4)
@@ -116,23 +113,21 @@ def panel(ctx):
                 mount_rocker(b, root, sw, T @ translation(0, j * 0.22 * pw, 0))
     if well is None:
         return
-    cols = p.integers("cols", 2, 4 if pw > 0.11 else 3)
-    key = ctx.choose("button", BUTTONS)
+    cols = p.integers("cols", 2, 4 if pw > 0.14 else 3)
     g = p.uniform("key_gap", 0.001, 0.0018)  # keys touch their neighbours and the well (< 2 mm)
     cw, pitch = (well[1] - well[0]) / cols, (well[3] - well[2]) / (rows + release)
-    for r in range(rows + release):
-        last = release and r == rows
-        zc = well[3] - (r + 0.5) * pitch
-        for c in range(1 if last else cols):
-            q = p.scope(f"key{r}_{c}")
-            yc = 0.0 if last else well[0] + (c + 0.5) * cw
-            reach = t + q.uniform("proud", 0.001, 0.003)
-            if last or key is rect_button:
-                cap = rect_button(q, width=(well[1] - well[0] if last else cw) - g, height=pitch - g, reach=reach)
-            else:  # round keys leave wide gaps in their cells: give each a collar
-                cap = key(q, radius=(min(cw, pitch) - g) / 2 - 0.003, reach=reach)
-                root.add(button_bezel(q, cap, gap=g / 2), translation(-D / 2, pc[0] + yc, pc[1] + zc))
-            mount_button(b, root, cap, translation(-D / 2, pc[0] + yc, pc[1] + zc))
+    reach = t + p.uniform("key_proud", 0.001, 0.003)
+    key, q = ctx.choose("button", BUTTONS), p.scope("key")  # one key design, copied over the keypad
+    if key is rect_button:
+        cap, collar = rect_button(q, width=cw - g, height=pitch - g, reach=reach), None
+    else:  # round keys leave wide gaps in their cells: each gets a collar
+        cap = key(q, radius=(min(cw, pitch) - g) / 2 - 0.003, reach=reach)
+        collar = button_bezel(q.scope("collar"), cap, gap=g / 2)
+    centre = translation(-D / 2, pc[0] + (well[0] + well[1]) / 2, pc[1] + well[3] - rows * pitch / 2)
+    mount_keypad(b, root, cap, centre, rows, cols, (cw, pitch), collar)
+    if release:
+        rel = rect_button(p.scope("release"), width=well[1] - well[0] - g, height=pitch - g, reach=reach)
+        mount_button(b, root, rel, translation(-D / 2, pc[0], pc[1] + well[2] + pitch / 2))
 
 
 def table(ctx):

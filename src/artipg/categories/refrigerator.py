@@ -145,7 +145,7 @@ def _dispenser(ctx, q, link, door, t, zp):
     ph, pt, d = q.uniform("height", 0.22, 0.32), 0.012, q.uniform("reach", 0.03, 0.05)
     z = q.uniform("z", 1.0, 1.2) - link.link.joint.origin[2, 3] - door.pose[2, 3]
     P = door.pose
-    link.add(Part("panel", "dispenser", [cuboid_between((-t - pt, -pw / 2, z - ph), (-t, pw / 2, z), role="panel"),
+    link.add(Part("panel", "dispenser", [cuboid_between((-t - pt, -pw / 2, z - ph), (-0.002, pw / 2, z), role="panel"),
                                          cuboid_between((-t - pt - d - 0.012, -pw / 4, z - 0.04), (-t - pt, pw / 4, z))]), P)
     L = q.uniform("paddle", 0.08, 0.12)
     pad = ctx.builder.create_link("lever", link)

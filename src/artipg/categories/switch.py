@@ -6,7 +6,7 @@ a 2 x 2 grid): rocker paddles (flat or crowned) in bezels, toggle levers on smal
 escutcheon bosses, push-button caps (round or rectangular), and, on dimmers, a
 rotary knob next to an optional rocker or toggle.
 Joints: rockers and toggles revolute about a horizontal axis (y), resting in one
-position (tilted by -tilt) with range 2 tilt (rockers +-6-12 deg, toggles +-17-26 deg);
+position (tilted by -tilt) with range 2 tilt (rockers +-5-12 deg, toggles +-17-26 deg);
 buttons prismatic into the wall (3-6 mm); dimmer knobs revolute (250-300 deg).
 Sizes (metres): plates 0.06-0.12 tall, 0.05-0.22 wide, modules 0.025-0.05 apart.
 """

@@ -23,7 +23,7 @@ from artipg.geometry import cuboid_between
 from artipg.geometry.transforms import rot_x, translation
 from artipg.model.part import Part
 from artipg.rules import Category, Slot
-from artipg.templates.frames import glazed_panel, stop_ring, swing_clearance, window_frame
+from artipg.templates.frames import glazed_panel, inset_leaf, sash_tracks, stop_ring, window_frame
 from artipg.templates.handles import arch_handle, edge_pull, flat_bar_handle
 from artipg.templates.mounting import free_edge_yz, mount_hinged, mount_sliding
 from artipg.templates.turn_handles import casement_handle, mount_turning
@@ -44,18 +44,10 @@ def frame(ctx):
         "sash_thickness", *t)
     root = ctx.builder.create_link("frame")
     if ctx.sub in ("sliding", "double_hung"):
-        n = 2 if W < 1.5 else n
-        lt, gt, e = p.uniform("lip", 0.008, 0.012), p.uniform("guide", 0.008, 0.012), 0.002
-        fr = root.add(window_frame(p.scope("frame"), W, H, depth=2 * lt + 4 * e + 2 * ts + gt))
-        D, gh = fr.anchor("depth")[0], p.uniform("guide_height", 0.015, 0.025)
-        # lips at the front and back and a guide between the two tracks (sashes: +- 2 mm)
-        xs = ((0.0, lt), (lt + 2 * e + ts, lt + 2 * e + ts + gt), (D - lt, D))
-        if ctx.sub == "sliding":  # along the head and the sill
-            prims = [cuboid_between((x0, -W / 2, z0), (x1, W / 2, z0 + gh)) for x0, x1 in xs for z0 in (0, H - gh)]
-        else:  # along the jambs
-            prims = [cuboid_between((x0, y0, 0), (x1, y0 + gh, H)) for x0, x1 in xs for y0 in (-W / 2, W / 2 - gh)]
-        root.add(Part("frame", "track", prims))
-        return root, dict(W=W, H=H, n=n, ts=ts, tracks=(lt + e, lt + 3 * e + ts + gt))
+        tracks, depth, xs = sash_tracks(p.scope("tracks"), W, H, ts, vertical=ctx.sub == "double_hung")
+        root.add(window_frame(p.scope("frame"), W, H, depth=depth))
+        root.add(tracks)
+        return root, dict(W=W, H=H, n=2 if W < 1.5 else n, ts=ts, tracks=xs)
     mw = p.uniform("mullion", 0.04, 0.07)
     Wo = n * W + (n - 1) * mw
     fr = root.add(window_frame(p.scope("frame"), Wo, H, depth=ts + p.uniform("stop_room", 0.02, 0.05)))
@@ -90,17 +82,13 @@ def sashes(ctx):
     for i, y in enumerate(d["ys"]):
         q = p.scope(f"sash{i}")
         if fixed_mid and i == 1:
-            frame_part, glass = sash(q, W - 2 * c, H - 2 * c)
-            root.add(frame_part, translation(ts, y, H / 2))
-            root.add(glass, frame_part.pose)
+            _place(ctx, root, sash(q, W - 2 * c, H - 2 * c), translation(ts, y, H / 2))
             continue
         outer = "-y" if i == 0 else "+y" if i == d["n"] - 1 else None  # side sashes hinge on the jambs
         side = hinge or (outer if d["n"] > 1 and outer else q.choice("hinge", ("+y", "-y")))
-        vertical = side in ("+y", "-y")
-        cf = swing_clearance(ts, W if vertical else H, c)
-        sw, sh = (W - c - cf, H - 2 * c) if vertical else (W - 2 * c, H - c - cf)
-        sgn = 1.0 if side in ("+y", "+z") else -1.0
-        cy, cz = y + (sgn * (cf - c) / 2 if vertical else 0.0), H / 2 + (0.0 if vertical else sgn * (cf - c) / 2)
+        vertical, sgn = side[1] == "y", 1.0 if side[0] == "+" else -1.0
+        (sw, sh), (dy, dz) = inset_leaf(W, H, side, ts, c)
+        cy, cz = y + dy, H / 2 + dz
         if not vertical:
             lim = p.uniform("awning_limit", 0.3, 0.8) if side == "+z" else p.uniform("hopper_limit", 0.2, 0.4)
         frame_part, glass = sash(q, sw, sh)
@@ -117,6 +105,18 @@ def sashes(ctx):
         else:
             pull = ctx.choose("pull", PULLS)(q.scope("pull"), length=min(0.2, 0.4 * sw))
             link.add(pull, front @ rot_x(math.pi / 2))
+
+
+def _place(ctx, root, sash, origin, axis=None, travel=0.0):
+    """Add a sash (frame, glass) fixed in the frame, or sliding along ``axis``."""
+    frame_part, glass = sash
+    if axis is None:
+        link = root
+        link.add(frame_part, origin)
+    else:
+        link = mount_sliding(ctx.builder, root, frame_part, origin=origin, axis=axis, limits=(0.0, travel), name="sash")
+    link.add(glass, frame_part.pose)
+    return link
 
 
 def _sliding(ctx, root, d, c, sash, rail):
@@ -138,15 +138,9 @@ def _sliding(ctx, root, d, c, sash, rail):
     pull = ctx.choose("pull", PULLS)
     for i, (x, y, s, travel) in enumerate(specs):
         w = wc if n == 3 and i == 0 else ws
-        frame_part, glass = sash(p.scope(f"sash{i}"), w, sh)
-        if not s:
-            root.add(frame_part, translation(x + ts, y, H / 2))
-            root.add(glass, frame_part.pose)
-            continue
-        link = mount_sliding(ctx.builder, root, frame_part, origin=translation(x + ts, y, H / 2), axis=(0, s, 0),
-                             limits=(0.0, travel), name="sash")
-        link.add(glass, frame_part.pose)
-        if x == xa:  # pull on the stile that leads the sash open
+        link = _place(ctx, root, sash(p.scope(f"sash{i}"), w, sh), translation(x + ts, y, H / 2),
+                      (0, s, 0) if s else None, travel)
+        if s and x == xa:  # pull on the stile that leads the sash open
             hy = s * (w / 2 - rail / 2)
             link.add(pull(p.scope(f"pull{i}"), length=min(0.2, 0.3 * sh)), translation(-ts, -hy, 0.0))
 
@@ -157,19 +151,9 @@ def _hung(ctx, root, d, c, sash, rail):
     ov = p.uniform("meeting_overlap", 0.03, 0.05)
     hs, ws = (H + ov) / 2 - c, W - 2 * c
     travel = H - 2 * c - hs - 0.002
-    lower = sash(p.scope("lower"), ws, hs)
-    link = mount_sliding(ctx.builder, root, lower[0], origin=translation(xa + ts, 0.0, c + hs / 2), axis=(0, 0, 1),
-                         limits=(0.0, travel), name="sash")
-    link.add(lower[1], lower[0].pose)
-    upper = sash(p.scope("upper"), ws, hs)
-    origin = translation(xb + ts, 0.0, H - c - hs / 2)
-    if p.flag("double_hung", 0.6):
-        up = mount_sliding(ctx.builder, root, upper[0], origin=origin, axis=(0, 0, -1), limits=(0.0, travel),
-                           name="sash")
-        up.add(upper[1], upper[0].pose)
-    else:
-        root.add(upper[0], origin)
-        root.add(upper[1], upper[0].pose)
+    link = _place(ctx, root, sash(p.scope("lower"), ws, hs), translation(xa + ts, 0.0, c + hs / 2), (0, 0, 1), travel)
+    _place(ctx, root, sash(p.scope("upper"), ws, hs), translation(xb + ts, 0.0, H - c - hs / 2),
+           (0, 0, -1) if p.flag("double_hung", 0.6) else None, travel)  # or single-hung
     tmpl, k = ctx.choose("lift", PULLS), p.integers("lifts", 1, 2)
     for i in range(k):
         y = 0.0 if k == 1 else (i - 0.5) * 0.5 * ws

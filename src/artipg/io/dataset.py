@@ -46,7 +46,7 @@ def _read(task):
     folder, n, source, seed = task
     try:
         return read_object(folder, n, source=source, seed=seed)
-    except (OSError, ValueError, KeyError, IndexError) as e:
+    except Exception as e:  # noqa: BLE001 - one broken folder (bad XML, bad mesh ...) must not stop a whole set
         return f"{type(e).__name__}: {e}"
 
 

@@ -113,7 +113,7 @@ def directed_mean_matrix(queries: Sequence[np.ndarray], targets: Sequence[np.nda
     qpts, qid = np.ascontiguousarray(qpts[order]), qid[order]
 
     def one(j: int) -> np.ndarray:
-        tree = cKDTree(np.asarray(targets[j], dtype=np.float64), balanced_tree=False, compact_nodes=False)
+        tree = cKDTree(np.asarray(targets[j], dtype=np.float64), leafsize=32, balanced_tree=False, compact_nodes=False)
         sums = np.zeros(len(queries))
         for s in range(0, len(qpts), _QUERY_CHUNK):
             d, _ = tree.query(qpts[s:s + _QUERY_CHUNK], k=1)

@@ -98,10 +98,13 @@ class PointNetEncoder:
 
     # ------------------------------------------------------------- forward
     def _pooled(self, clouds: np.ndarray) -> np.ndarray:
-        h = normalize_bbox(clouds).astype(np.float32)
+        B, N, _ = clouds.shape
+        h = normalize_bbox(clouds).astype(np.float32).reshape(B * N, 3)   # one GEMM per layer
         for w, b in self.conv:
-            h = np.maximum(h @ w + b, 0.0)
-        return h.max(axis=1)
+            h = h @ w
+            h += b
+            np.maximum(h, 0.0, out=h)
+        return h.reshape(B, N, -1).max(axis=1)
 
     def features(self, clouds, batch: int = 16) -> np.ndarray:
         """Global features (M, F) float64 of clouds (M, N, 3) (or one cloud (N, 3) -> (1, F)).

@@ -24,7 +24,8 @@ def build_model(n_classes: int, conv_widths=CONV_WIDTHS, fc_widths=FC_WIDTHS, dr
         def __init__(self):
             super().__init__()
             dims = (3,) + tuple(conv_widths)
-            self.conv = nn.ModuleList(nn.Linear(a, b) for a, b in zip(dims[:-1], dims[1:]))
+            # kernel-1 convolutions over the (B, C, N) layout = one shared linear map per point
+            self.conv = nn.ModuleList(nn.Conv1d(a, b, 1) for a, b in zip(dims[:-1], dims[1:]))
             self.conv_bn = nn.ModuleList(nn.BatchNorm1d(b) for b in dims[1:])
             fdims = (dims[-1],) + tuple(fc_widths)
             self.fc = nn.ModuleList(nn.Linear(a, b) for a, b in zip(fdims[:-1], fdims[1:]))
@@ -33,10 +34,10 @@ def build_model(n_classes: int, conv_widths=CONV_WIDTHS, fc_widths=FC_WIDTHS, dr
             self.head = nn.Linear(fdims[-1], n_classes)
 
         def features(self, x):
-            h = x
-            for lin, bn in zip(self.conv, self.conv_bn):
-                h = torch.relu(bn(lin(h).transpose(1, 2)).transpose(1, 2))
-            return h.max(dim=1).values
+            h = x.transpose(1, 2)
+            for conv, bn in zip(self.conv, self.conv_bn):
+                h = torch.relu(bn(conv(h)))
+            return h.max(dim=2).values
 
         def forward(self, x):
             h = self.features(x)
@@ -48,8 +49,9 @@ def build_model(n_classes: int, conv_widths=CONV_WIDTHS, fc_widths=FC_WIDTHS, dr
 
 
 def _fold(lin, bn) -> tuple[np.ndarray, np.ndarray]:
-    """Linear followed by eval-mode batch-norm as one (in, out) weight and (out,) bias."""
-    W = lin.weight.detach().double().numpy()          # (out, in)
+    """Linear (or kernel-1 Conv1d) followed by eval-mode batch-norm as one (in, out)
+    weight and (out,) bias."""
+    W = lin.weight.detach().double().numpy().reshape(lin.weight.shape[0], -1)   # (out, in)
     b = lin.bias.detach().double().numpy()
     g = bn.weight.detach().double().numpy() / np.sqrt(bn.running_var.detach().double().numpy() + bn.eps)
     mean = bn.running_mean.detach().double().numpy()

@@ -183,11 +183,11 @@ class ArticulatedObject:
         """Exact axis-aligned bounding box (2, 3) of the object at ``qpos``."""
         return self.primitive_table.bounds(self.link_poses(qpos))
 
-    def sample_points(self, n: int = 2048, seed: int = 0, qpos=None):
+    def sample_points(self, n: int = 2048, seed: int = 0, qpos=None, parts=None):
         """Area-uniform labelled surface points; see :func:`artipg.annotate.points.sample_points`."""
         from artipg.annotate.points import sample_points
 
-        return sample_points(self, n, seed=seed, qpos=qpos)
+        return sample_points(self, n, seed=seed, qpos=qpos, parts=parts)
 
     def to_trimesh(self, qpos=None, sections: int = 32):
         """The whole object at ``qpos`` as one ``trimesh.Trimesh`` (object frame)."""

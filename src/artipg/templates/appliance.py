@@ -19,6 +19,7 @@ import numpy as np
 from artipg.geometry import cuboid, cuboid_between, cylinder, rect_ring
 from artipg.geometry.transforms import rot_y, translation
 from artipg.model.part import Grasp, Part, Region
+from artipg.templates.panels import door_edge_grasps
 
 _FRAME_TO_X = rot_y(np.pi / 2)  # rect ring's z (thickness) -> x
 
@@ -112,7 +113,20 @@ def window_door(p, width: float, height: float, thickness: float | None = None, 
     return Part("door", "window_door", prims,
                 anchors={"edge_+y": (-t, width / 2, 0.0), "edge_-y": (-t, -width / 2, 0.0),
                          "edge_+z": (-t, 0.0, height / 2), "edge_-z": (-t, 0.0, -height / 2), "front": (-t, 0.0, 0.0)},
-                regions={"push": Region(("panel", "glass"), front)}, actionable="hinge_door")
+                regions={"push": Region(("panel", "glass"), front)}, grasps=door_edge_grasps(t, width, height),
+                actionable="hinge_door")
+
+
+def stack_layout(heights, span: float, margin: float) -> tuple[list[tuple[float, float]], float]:
+    """Stack blocks of ``heights`` from the top of a panel ``span`` tall (z in
+    [-span/2, span/2]) with ``margin`` above, between and below them, shrinking them
+    all by one factor when they do not fit. Returns ((z_top, height) per block, factor)."""
+    f = min(1.0, (span - margin * (len(heights) + 1)) / max(sum(heights), 1e-9))
+    z, out = span / 2 - margin, []
+    for h in heights:
+        out.append((z, h * f))
+        z -= h * f + margin
+    return out, f
 
 
 def turntable(p, radius: float) -> Part:

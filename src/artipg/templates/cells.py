@@ -11,6 +11,7 @@ The conventions are those of :mod:`artipg.templates.panels` and
 
 from __future__ import annotations
 
+from artipg.geometry import RectRing
 from artipg.geometry.transforms import translation
 from artipg.rules.params import option_name
 from artipg.templates.mounting import free_edge_yz, front_thickness, handle_pose, mount_hinged, mount_sliding
@@ -55,8 +56,9 @@ def add_door(ctx, parent, q, *, front_x: float, outer, side: str, limits, templa
              margin: float = 0.04, name: str = "door"):
     """A door covering ``outer``, hinged on ``side`` ("+y", "-y", "+z", "-z"); returns its link.
 
-    The handle (a front-handle template or None) sits ``margin`` inside the free edge,
-    vertical on side-hinged doors and horizontal on top/bottom-hinged ones.
+    The handle (a front-handle template or None) sits ``margin`` inside the free edge
+    (at most half the rail width of framed fronts), vertical on side-hinged doors and
+    horizontal on top/bottom-hinged ones.
     """
     y0, y1, z0, z1 = outer
     size = (y1 - y0, z1 - z0)
@@ -64,6 +66,9 @@ def add_door(ctx, parent, q, *, front_x: float, outer, side: str, limits, templa
     link = mount_hinged(ctx.builder, parent, door, front_x=front_x, center_yz=((y0 + y1) / 2, (z0 + z1) / 2),
                         size_yz=size, side=side, limits=limits, parent_pose=parent_pose, name=name)
     if handle is not None:
+        prim = door.primitives[0]
+        if prim.geom is RectRing:  # framed fronts: keep the handle on the frame, not the recessed panel
+            margin = min(margin, (prim.params[0] - prim.params[3]) / 4)
         horizontal = side in ("+z", "-z")
         span = size[0] if horizontal else size[1]
         length = handle_length if handle_length is not None else min(0.4 * span, 0.35)

@@ -6,7 +6,8 @@ the mount point on that surface (the surface is the plane x = 0), the control pr
 along -x and +z is "up" on the panel. To mount on a surface facing another way, rotate
 the mount pose (e.g. ``rot_z(pi / 2)`` for a surface facing -y).
 
-Joints (set them with :func:`mount_knob`, :func:`mount_button`, :func:`mount_rocker`):
+Joints (set them with :func:`mount_knob`, :func:`mount_button` / :func:`mount_keypad`,
+:func:`mount_rocker`):
 
 - knobs: revolute or continuous about +x through the origin (positive = clockwise seen
   from the front). Their back face lies on x = 0, so any angle is collision free.
@@ -19,7 +20,8 @@ Joints (set them with :func:`mount_knob`, :func:`mount_button`, :func:`mount_roc
 - rockers: revolute about +z through the origin; the rest pose is tilted by ``-tilt``
   (one side pressed), limits (0, 2 tilt); the stand-off keeps the cap off the surface.
 
-Anchors: ``front`` (centre of the face a finger touches), ``back``; knobs also ``axis``.
+Anchors: ``front`` (centre of the face a finger touches) and ``back``; buttons also
+``stop``.
 Every template takes the recorder ``p`` first; sizes fixed by the caller (the largest
 radius or cap size the panel layout allows) are keyword arguments.
 """
@@ -27,6 +29,7 @@ radius or cap size the panel layout allows) are keyword arguments.
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 import numpy as np
 
@@ -46,14 +49,13 @@ def _x_disc(r_back: float, r_front: float, x0: float, x1: float, role: str):
     return frustum(r_back, r_front, x0 - x1, translation((x0 + x1) / 2, 0, 0) @ _ALONG_MX, role=role)
 
 
-def _knob_part(template, prims, x_grip, width_y, width_z, depth, semantic="knob") -> Part:
+def _knob_part(template, prims, x_grip, width_y, width_z, depth) -> Part:
     grasps = []
     for base, w in ((_JAW_Y, width_y), (_JAW_Z, width_z)):
         T = base.copy()
         T[0, 3] = x_grip
         grasps.append(Grasp(T, w + 0.02))
-    return Part(semantic, template, prims, anchors={"front": (-depth, 0.0, 0.0), "back": (0.0, 0.0, 0.0),
-                                                     "axis": (1.0, 0.0, 0.0)},
+    return Part("knob", template, prims, anchors={"front": (-depth, 0.0, 0.0), "back": (0.0, 0.0, 0.0)},
                 regions={"rotate": Region(("grip",)), "grasp": Region(("grip",))}, grasps=grasps,
                 actionable="hinge_knob")
 
@@ -100,7 +102,7 @@ def dial_knob(p, radius: float | None = None) -> Part:
     rf = p.uniform("front_ratio", 0.8, 0.95) * R
     prims = [_x_disc(R, rf, 0.0, -d, "grip"),
              cuboid(ridge, 0.2 * rf, 1.6 * rf, translation(-d - ridge / 2, 0, 0), role="grip")]
-    return _knob_part("dial_knob", prims, -d / 2, 2 * rf, 2 * rf, d + ridge, semantic="knob")
+    return _knob_part("dial_knob", prims, -d / 2, 2 * rf, 2 * rf, d + ridge)
 
 
 KNOBS = {round_knob: 2.0, pointer_knob: 1.5, fluted_knob: 1.0, dial_knob: 1.0}
@@ -206,6 +208,23 @@ def mount_button(builder, parent, part, pose: np.ndarray, name: str = "button"):
     link.set_joint("prismatic", pose, axis=(1.0, 0.0, 0.0), limits=(0.0, travel))
     link.add(part)
     return link
+
+
+def mount_keypad(builder, parent, key: Part, pose: np.ndarray, rows: int, cols: int, pitch: tuple[float, float],
+                 collar: Part | None = None, name: str = "button") -> list:
+    """Mount copies of ``key`` (and of its ``collar``) on a ``rows`` x ``cols`` grid.
+
+    ``pose`` is the mount frame of the grid's centre; ``pitch`` = (dy, dz) the spacing in
+    metres; row 0 is the top row. Returns the button links, row by row.
+    """
+    links = []
+    for r in range(rows):
+        for c in range(cols):
+            T = pose @ translation(0, (c - (cols - 1) / 2) * pitch[0], ((rows - 1) / 2 - r) * pitch[1])
+            if collar is not None:
+                parent.add(replace(collar), T)
+            links.append(mount_button(builder, parent, replace(key), T, name=name))
+    return links
 
 
 def mount_rocker(builder, parent, part, pose: np.ndarray, name: str = "switch"):

@@ -65,7 +65,9 @@ def _front(p, template, width, height, bridge, depth, rim, rims, edge, temple, k
     if template == "full_rim_front" and edge(b) < 0.5 * a and p.flag("arched_bridge", 0.5):
         prims.append(torus(yb, bh / 2, math.pi, translation(-depth / 2, 0, zb) @ _ARC_YZ, role="bridge"))
     else:
-        prims.append(cuboid_between((-0.8 * depth, -yb, zb - bh / 2), (-0.2 * depth, yb, zb + bh / 2), role="bridge"))
+        bd = max(0.6 * depth, 0.0016)
+        prims.append(cuboid_between((-(depth + bd) / 2, -yb, zb - bh / 2), ((bd - depth) / 2, yb, zb + bh / 2),
+                                    role="bridge"))
     for s in (1.0, -1.0):
         prims.append(cuboid_between((-depth, min(s * y0, s * yh), zh - temple_h / 2),
                                     (0.0, max(s * y0, s * yh), zh + top), role="endpiece"))

@@ -14,9 +14,11 @@ clear of the frame if the free edge keeps :func:`swing_clearance` to the frame.
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
-from artipg.geometry import cuboid, cuboid_between, rect_ring
+from artipg.geometry import cuboid, cuboid_between, cylinder, prism, rect_ring
 from artipg.geometry.transforms import rot_y, translation
 from artipg.model.part import Part, Region
 
@@ -146,3 +148,83 @@ def glazed_panel(p, width: float, height: float, thickness: float | None = None,
     gt = min(0.3 * t, p.uniform("glass_thickness", 0.004, 0.02))
     glass = Part("glass", "glazed_panel", [cuboid(gt, gw, gh, translation(-t / 2, 0, 0), role="glass")])
     return frame, glass
+
+
+def barn_hardware(p, width: float, thickness: float, span: tuple[float, float], drop: float):
+    """Track and hangers of a sliding barn door ``width`` wide and ``thickness`` thick.
+
+    Frame: origin at the top of the closed leaf's back face (centre), the leaf hanging
+    below in x in [-thickness, 0]. The header board runs along y over ``span`` (y0, y1)
+    behind the leaf's plane (its back face is the wall, anchor ``wall``) from ``drop``
+    below the leaf top to above the rail; the rail stands off the header on spacers;
+    two straps on the leaf's face carry rollers that sit on the rail.
+
+    Returns
+    -------
+    (Part, Part)
+        The track (``frame``: header, rail, spacers) for the parent and the hangers
+        (``hinge``: straps, axles, rollers) for the leaf, both in this frame.
+    """
+    t = thickness
+    hdr = p.uniform("header_thickness", 0.015, 0.025)
+    gap = p.uniform("wall_gap", 0.005, 0.015)  # leaf back face to header front
+    st, wt, e = p.uniform("strap_thickness", 0.005, 0.008), p.uniform("wheel_width", 0.012, 0.02), 0.003
+    R, rt, rh = p.uniform("wheel_radius", 0.03, 0.05), p.uniform("rail_thickness", 0.006, 0.01), 0.03
+    xr = -t + e + wt / 2  # wheel and rail centre line, behind the straps
+    zr = p.uniform("rail_gap", 0.03, 0.06) + rh  # rail top above the leaf
+    y0, y1 = span
+    prims = [cuboid_between((gap, y0, -drop), (gap + hdr, y1, zr + 2 * R + 0.03), role="header"),
+             cuboid_between((xr - rt / 2, y0, zr - rh), (xr + rt / 2, y1, zr), role="rail")]
+    for k in range(4):
+        y = y0 + 0.04 + k * (y1 - y0 - 0.08) / 3
+        prims.append(cylinder(0.008, gap - xr, translation((xr + gap) / 2, y, zr - rh / 2) @ _RING_TO_X,
+                              role="spacer"))
+    track = Part("frame", "barn_track", prims, anchors={"wall": (gap + hdr, 0.0, 0.0)})
+    hw, zc = [], zr + R * math.cos(math.pi / 16)  # roller centre: a 16-gon standing on a flat
+    for y in (-0.32 * width, 0.32 * width):  # strap on the leaf face, axle, roller on the rail
+        hw += [cuboid_between((-t - st, y - 0.02, -0.12), (-t, y + 0.02, zc + 0.02), role="strap"),
+               cylinder(0.006, e + 0.002, translation(-t + e / 2, y, zc) @ _RING_TO_X, role="axle"),
+               prism(R, wt, 16, translation(xr, y, zc) @ _RING_TO_X, role="wheel")]
+    return track, Part("hinge", "barn_hanger", hw)
+
+
+def sash_tracks(p, width: float, height: float, sash_thickness: float, vertical: bool):
+    """Guides for two tracks of sliding sashes in a window opening (frame convention
+    above): lips at the front and back of the frame and a guide strip between the
+    tracks, 2 mm clear of the sashes, along the head and the sill (sashes sliding
+    sideways) or along the jambs (``vertical``: hung sashes sliding up and down).
+
+    Returns
+    -------
+    (Part, float, (float, float))
+        The guides, the frame depth they need, and the x of the sashes' front faces in
+        the front and in the back track.
+    """
+    lt, gt, gh, e = p.uniform("lip", 0.008, 0.012), p.uniform("guide", 0.008, 0.012), p.uniform(
+        "guide_height", 0.015, 0.025), 0.002
+    ts, W, H = sash_thickness, width / 2, height
+    depth = 2 * lt + 4 * e + 2 * ts + gt
+    xs = ((0.0, lt), (lt + 2 * e + ts, lt + 2 * e + ts + gt), (depth - lt, depth))
+    if vertical:
+        prims = [cuboid_between((x0, y0, 0), (x1, y0 + gh, H), role="guide") for x0, x1 in xs for y0 in (-W, W - gh)]
+    else:
+        prims = [cuboid_between((x0, -W, z0), (x1, W, z0 + gh), role="guide") for x0, x1 in xs for z0 in (0, H - gh)]
+    return Part("frame", "sash_tracks", prims), depth, (lt + e, lt + 3 * e + ts + gt)
+
+
+def inset_leaf(width: float, height: float, side: str, thickness: float, gap: float):
+    """Size and centre offset of a leaf hinged on ``side`` ("+y", "-y", "+z", "-z") of
+    a ``width`` x ``height`` opening: ``gap`` on the hinge side and the two sides
+    along the hinge, :func:`swing_clearance` on the free side.
+
+    Returns
+    -------
+    ((float, float), (float, float))
+        The leaf's (width, height) and its centre's (dy, dz) from the opening's centre.
+    """
+    s = 1.0 if side[0] == "+" else -1.0
+    if side[1] == "y":
+        cf = swing_clearance(thickness, width, gap)
+        return (width - gap - cf, height - 2 * gap), (s * (cf - gap) / 2, 0.0)
+    cf = swing_clearance(thickness, height, gap)
+    return (width - 2 * gap, height - gap - cf), (0.0, s * (cf - gap) / 2)

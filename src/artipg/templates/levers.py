@@ -2,7 +2,8 @@
 
 Bails (``round_bail``, ``square_bail``, ``grip_bail``): origin at the midpoint between
 the two pivots, pivot axis +y, the bail stands upright (+z) in the y-z plane with its
-leg ends on the pivots at y = +-``span``. ``clear`` = (radius, height) describes the
+leg ends on the pivots at y = +-``span``; anchors ``apex`` / ``apex_inner`` (centre
+line / underside of the top), ``pin_+y`` (where the pivot pins meet the lugs). ``clear`` = (radius, height) describes the
 obstacle (rim, lid, knob) the bail must pass over when it swings: a cylinder of that
 radius rising ``height`` above the pivot plane; the leg height is chosen so the swept
 bail clears it by ``CLEARANCE``. ``ear_lugs`` are the matching bosses on the body.
@@ -77,7 +78,7 @@ def _bail(p, template, span, clear, rc_frac, sleeve):
         grip = ("grip",)
     return Part("handle", template, prims,
                 anchors={"pivot_+y": (0.0, span, 0.0), "pivot_-y": (0.0, -span, 0.0), "apex": (0.0, 0.0, top),
-                         "pin_+y": (0.0, span - r - lp, 0.0)},
+                         "apex_inner": (0.0, 0.0, top - rg), "pin_+y": (0.0, span - r - lp, 0.0)},
                 regions={"grasp": Region(grip), "lift": Region(grip)},
                 grasps=[top_grasp(0.0, y, h + math.sqrt(rc * rc - max(0.0, abs(y) - span + rc) ** 2), 2 * rg + 0.02)
                         for y in (-0.25 * span, 0.0, 0.25 * span)],

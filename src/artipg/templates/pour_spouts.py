@@ -18,7 +18,7 @@ import math
 
 from artipg.geometry import cuboid, cylinder, frustum, tube
 from artipg.geometry.transforms import rot_y, translation
-from artipg.geometry.tube import Tube, arc, line
+from artipg.geometry.tube import arc, line
 from artipg.model.part import Part, Region
 
 _EMBED = 0.0008  # the spout's inner face sits this deep in the wall (walls are >= 1.5 mm)
@@ -58,21 +58,34 @@ def lip_spout(p, rise: float | None = None) -> Part:
     return _cone(p, "lip_spout", (0.012, 0.018), (0.55, 0.75), (0.02, 0.035), (0.25, 0.5), None)
 
 
+def _path_end(segs, a: float):
+    """End (x, z) and heading of a tube path of :func:`line` / :func:`arc` segments."""
+    x = z = 0.0
+    for kind, *v in segs:
+        if kind == "line":
+            x, z = x + v[0] * math.cos(a), z + v[0] * math.sin(a)
+        else:
+            s = math.copysign(v[0], v[1])
+            x, z, a = x + s * (math.sin(a + v[1]) - math.sin(a)), z + s * (math.cos(a) - math.cos(a + v[1])), a + v[1]
+    return x, z, a
+
+
 def gooseneck_spout(p, rise: float | None = None) -> Part:
     """Thin S-shaped tube rising from the bottom of the body (pour-over kettles)."""
     r = p.uniform("radius", 0.0035, 0.006)
     a0 = p.uniform("start_angle", 0.2, 0.5)
     a1 = p.uniform("rise_angle", 1.0, 1.3)
     a2 = -p.uniform("tip_drop", 0.1, 0.5)
-    segs = [line(p.uniform("root", 0.01, 0.02)), arc(p.uniform("bend", 0.015, 0.03), a1 - a0), None,
+    segs = [line(p.uniform("root", 0.01, 0.02)), arc(p.uniform("bend", 0.015, 0.03), a1 - a0), line(0.0),
             arc(p.uniform("neck_bend", 0.015, 0.03), a2 - a1), line(p.uniform("tip", 0.01, 0.025))]
-    z0 = Tube(r, tuple(s or line(1e-3) for s in segs), a0).end()[0][2]
-    segs[2] = line(max(0.01, ((rise or 0.1) - z0) / math.sin(a1)))
+    z0 = _path_end(segs, a0)[1]
+    segs[2] = line(max(0.01, ((rise or 0.1) - z0) / math.sin(a1)))  # the riser reaches ``rise``
     rn = r + p.uniform("boss", 0.001, 0.003)
     n = 2 * rn * math.sin(a0) + 0.001
-    T = translation(n / 2 - 0.0005, 0, 0)
-    end, heading = Tube(r, tuple(segs), a0).end()
-    return _spout("gooseneck_spout", [_neck(rn, n)] + tube(r, segs, a0, T, role="spout"), T[:3, 3] + end, heading, r)
+    x, z, heading = _path_end(segs, a0)
+    x0 = n / 2 - 0.0005
+    prims = [_neck(rn, n)] + tube(r, segs, a0, translation(x0, 0, 0), role="spout")
+    return _spout("gooseneck_spout", prims, (x0 + x, 0.0, z), heading, r)
 
 
 SPOUTS = {cone_spout: 1.0, lip_spout: 1.0, gooseneck_spout: 1.0}

@@ -23,9 +23,9 @@ import math
 
 import numpy as np
 
-from artipg.geometry import cuboid, cylinder, frustum, ring
+from artipg.geometry import cuboid, cylinder, frustum, ring, tube
 from artipg.geometry.transforms import translation
-from artipg.geometry.tube import Tube, arc, line
+from artipg.geometry.tube import arc, line
 from artipg.model.part import Grasp, Part, Region
 
 
@@ -59,22 +59,35 @@ def column(p, radius: float, height: float) -> Part:
     return Part("body", "column", prims, anchors={"top": (0.0, 0.0, height)})
 
 
-def _spout(template, prims, outlet, direction, r, extra=None) -> Part:
+def _spout(template, prims, outlet, direction, extra=None) -> Part:
     d = np.asarray(direction, dtype=float)
     anchors = {"outlet": tuple(outlet), "outlet_dir": tuple(d / np.linalg.norm(d))}
     return Part("spout", template, prims, anchors=anchors | (extra or {}),
                 regions={"grasp": Region(("tube",)), "rotate": Region(("tube",))})
 
 
+def _path_end(segments, a: float) -> tuple[float, float, float]:
+    """End (x, z) and heading of a tube path starting at the origin with heading ``a``."""
+    x = z = 0.0
+    for seg in segments:
+        if seg[0] == "line":
+            x, z = x + math.cos(a) * seg[1], z + math.sin(a) * seg[1]
+        else:
+            sg = seg[1] if seg[2] > 0 else -seg[1]
+            cx, cz = x - math.sin(a) * sg, z + math.cos(a) * sg
+            a += seg[2]
+            x, z = cx + math.sin(a) * sg, cz - math.cos(a) * sg
+    return x, z, a
+
+
 def _top_spout(p, r, segs_after, low, rise):
     """Riser + ``segs_after``; the riser is lengthened so the rest stays above ``low``
     (every design here ends at its lowest point)."""
     rise = p.uniform("rise", 0.03, 0.12, fixed=rise)
-    end0, _ = Tube(r, (line(1e-3),) + tuple(segs_after), math.pi / 2).end()
-    rise = max(rise, low, low + r - (float(end0[2]) - 1e-3))
-    t = Tube(r, (line(rise),) + tuple(segs_after), math.pi / 2)
-    end, a = t.end()
-    return t.primitives(role="tube"), end, (math.cos(a), 0.0, math.sin(a))
+    x, z, a = _path_end(segs_after, math.pi / 2)  # the part after the riser, from the origin
+    rise = max(rise, low, low + r - z)
+    segs = (line(rise),) + tuple(segs_after)
+    return tube(r, segs, math.pi / 2, role="tube"), (x, 0.0, z + rise), (math.cos(a), 0.0, math.sin(a))
 
 
 def gooseneck_spout(p, radius: float | None = None, low: float = 0.0, rise: float | None = None) -> Part:
@@ -83,7 +96,7 @@ def gooseneck_spout(p, radius: float | None = None, low: float = 0.0, rise: floa
     R = p.uniform("bend_radius", 0.06, 0.12)
     turn = p.uniform("turn", 0.85, 1.0) * math.pi
     prims, end, d = _top_spout(p, r, [arc(R, turn), line(p.uniform("drop", 0.005, 0.04))], low, rise)
-    return _spout("gooseneck_spout", prims, end, d, r)
+    return _spout("gooseneck_spout", prims, end, d)
 
 
 def arc_spout(p, radius: float | None = None, low: float = 0.0, rise: float | None = None) -> Part:
@@ -92,7 +105,7 @@ def arc_spout(p, radius: float | None = None, low: float = 0.0, rise: float | No
     segs = [arc(p.uniform("bend_radius", 0.03, 0.07), math.pi / 2), line(p.uniform("run", 0.04, 0.14)),
             arc(p.uniform("tip_radius", 0.02, 0.05), p.uniform("tip_turn", 0.3, 0.5) * math.pi)]
     prims, end, d = _top_spout(p, r, segs, low, rise)
-    return _spout("arc_spout", prims, end, d, r)
+    return _spout("arc_spout", prims, end, d)
 
 
 def tube_spout(p, radius: float | None = None, low: float = 0.0, rise: float | None = None) -> Part:
@@ -103,7 +116,7 @@ def tube_spout(p, radius: float | None = None, low: float = 0.0, rise: float | N
     prims, end, d = _top_spout(p, r, segs, low + ha, rise)
     x, z = end[0] + 1.05 * r, end[2] - r - ha / 2
     prims.append(cylinder(1.05 * r, ha + r, translation(x, 0, z + r / 2), role="tube"))
-    return _spout("tube_spout", prims, (x, 0.0, z - ha / 2), (0.0, 0.0, -1.0), r)
+    return _spout("tube_spout", prims, (x, 0.0, z - ha / 2), (0.0, 0.0, -1.0))
 
 
 TOP_SPOUTS = {gooseneck_spout: 2.0, arc_spout: 2.0, tube_spout: 1.0}
@@ -125,10 +138,9 @@ def collar_spout(p, mount: float, max_tip: float = 0.04) -> Part:
     tip = p.uniform("tip_radius", min(0.015, max_tip), min(0.04, max_tip))
     segs = [line(p.uniform("run", 0.05, 0.14)), arc(tip, p.uniform("tip_turn", 0.3, 0.5) * math.pi)]
     T = translation(x0, 0, 0)
-    tb = Tube(r, tuple(segs), math.pi)
-    end, a = tb.end()
-    prims = [col] + tb.primitives(T, role="tube")
-    return _spout("collar_spout", prims, (end[0] + x0, 0.0, end[2]), (math.cos(a), 0.0, math.sin(a)), r,
+    x, z, a = _path_end(segs, math.pi)
+    prims = [col] + tube(r, segs, math.pi, T, role="tube")
+    return _spout("collar_spout", prims, (x + x0, 0.0, z), (math.cos(a), 0.0, math.sin(a)),
                   {"collar_top": (0.0, 0.0, c / 2)})
 
 
@@ -141,7 +153,7 @@ def waterfall_spout(p, mount: float, max_tip: float = 0.04) -> Part:
     th = min(p.uniform("thickness", 0.008, 0.015), c)
     x0 = -(ri + t / 2)
     prims = [col, cuboid(L, w, th, translation(x0 - L / 2, 0, c / 2 - th / 2), role="tube")]
-    return _spout("waterfall_spout", prims, (x0 - L + 0.01, 0.0, c / 2 - th), (0.0, 0.0, -1.0), th,
+    return _spout("waterfall_spout", prims, (x0 - L + 0.01, 0.0, c / 2 - th), (0.0, 0.0, -1.0),
                   {"collar_top": (0.0, 0.0, c / 2)})
 
 

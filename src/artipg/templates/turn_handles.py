@@ -141,14 +141,15 @@ def casement_handle(p, side: float = 1.0):
     return base, lever
 
 
-def spoke_wheel(p, radius: float | None = None) -> Part:
-    """Safe handle: a hub with 3-5 spokes ending in balls (a ship's-wheel handle)."""
+def spoke_wheel(p, side: float = 1.0, radius: float | None = None) -> Part:
+    """Safe handle: a hub with 3-5 spokes ending in balls (a ship's-wheel handle);
+    ``side`` is ignored."""
     n = p.integers("spokes", 3, 5)
     L = p.uniform("spoke_length", 0.06, 0.12, fixed=radius)
     r = p.uniform("spoke_radius", 0.006, 0.01)
     hub_r = p.uniform("hub_radius", 0.02, 0.035)
-    hub_d = p.uniform("hub_depth", 0.02, 0.035)
     ball = p.uniform("ball_radius", 1.3, 1.9) * r
+    hub_d = max(p.uniform("hub_depth", 0.02, 0.035), 2 * ball + 0.006)  # the balls clear the surface
     x = -hub_d / 2
     prims = [_disc(hub_r, 0.0, -hub_d, "hub")]
     a0 = p.uniform("phase", 0.0, math.pi / n)

@@ -35,10 +35,11 @@ def check_object(obj, tol: Tolerances = Tolerances(), simulate: bool = False, si
     """
     rng = np.random.default_rng([int(obj.seed), SAMPLE_STREAM])
     checks = run_checks(Kinematics.of(obj), Pieces.of(obj, rng), tol)
-    blame = part_params(obj)
-    for c in checks.values():
-        for issue in c.issues:
-            issue.params = sorted({n for p in issue.parts for n in blame.get(p, [])})
+    if any(c.issues for c in checks.values()):
+        blame = part_params(obj)
+        for c in checks.values():
+            for issue in c.issues:
+                issue.params = sorted({n for p in issue.parts for n in blame.get(p, [])})
     report = Report(checks, tol.to_json())
     if simulate:
         from artipg.validate.sim import SimOptions, simulate_object

@@ -17,7 +17,7 @@ to another piece (both directions); a gap is the lowest positive one.
 
 from __future__ import annotations
 
-from dataclasses import asdict, dataclass
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -49,7 +49,8 @@ class Tolerances:
     open_fractions: tuple = (1.0,)
 
     def to_json(self) -> dict:
-        return {k: list(v) if isinstance(v, tuple) else v for k, v in asdict(self).items()}
+        return {"penetration": self.penetration, "floating": self.floating, "sweep_poses": self.sweep_poses,
+                "open_fractions": list(self.open_fractions)}
 
 
 #: Boxes must overlap by this much on every axis before a pair is checked for
@@ -161,8 +162,13 @@ def _open_pairs(kin, pieces, rest, frac) -> dict:
     W = P[pieces.link] @ pieces.T
     c, h = world_boxes(pieces, W)
     # links moved by the same rigid motion keep their relative pose (checked at rest)
-    G = np.round((P @ rigid_inverse(rest))[:, :3].reshape(len(P), 12), 9)
-    group = np.unique(G, axis=0, return_inverse=True)[1].ravel()[pieces.link]
+    G = (P @ rigid_inverse(rest))[:, :3].reshape(len(P), 12)
+    label = np.arange(len(P))
+    for i in range(1, len(P)):
+        same = np.flatnonzero(np.abs(G[:i] - G[i]).max(axis=1) < 1e-9)
+        if len(same):
+            label[i] = label[same[0]]
+    group = label[pieces.link]
     a, b = np.triu_indices(pieces.n, 1)
     keep = group[a] != group[b]
     a, b = a[keep], b[keep]

@@ -88,7 +88,8 @@ def pair_distance(pieces: Pieces, a: np.ndarray, b: np.ndarray, Wa: np.ndarray, 
 def box_box(ha: np.ndarray, hb: np.ndarray, Wa: np.ndarray, Wb: np.ndarray, margin: np.ndarray) -> np.ndarray:
     """Signed separation of oriented boxes with half extents ``ha``, ``hb`` (K, 3) at
     poses ``Wa``, ``Wb`` (K, 4, 4): minus the exact penetration depth when they
-    overlap, the exact distance when apart by at most ``margin`` (K,), otherwise the
+    overlap; when apart by at most ``margin`` (K,), the exact distance or, if it
+    is already known to be within ``margin``, an upper bound that is; otherwise the
     separating-axis gap (a lower bound of the distance)."""
     A = Wa[:, :3, :3]  # columns: box axes in the world
     B = Wb[:, :3, :3]
@@ -109,12 +110,17 @@ def box_box(ha: np.ndarray, hb: np.ndarray, Wa: np.ndarray, Wb: np.ndarray, marg
     sep = depth < 0
     near = np.flatnonzero(sep & (-depth <= margin))
     if len(near):
-        out[near] = box_distance(ha[near], hb[near], Wa[near], Wb[near])
+        m = margin[near]
+        out[near] = box_distance(ha[near], hb[near], Wa[near], Wb[near], np.where(np.isfinite(m), m, -1.0))
     return out
 
 
-def box_distance(ha, hb, Wa, Wb) -> np.ndarray:
-    """Exact distance (K,) between disjoint oriented boxes (vertex-face and edge-edge)."""
+def box_distance(ha, hb, Wa, Wb, edge_margin=None) -> np.ndarray:
+    """Exact distance (K,) between disjoint oriented boxes (vertex-face and edge-edge).
+
+    With ``edge_margin`` (K,), pairs whose vertex-face distance is already within it
+    skip the edge-edge part: their result is that upper bound (still <= the margin).
+    """
     rel_ab = rigid_inverse(Wb) @ Wa
     rel_ba = rigid_inverse(Wa) @ Wb
     va = _CORNERS[None] * 2 * ha[:, None]  # (K, 8, 3) corners of a in a's frame
@@ -124,11 +130,18 @@ def box_distance(ha, hb, Wa, Wb) -> np.ndarray:
     K = len(ha)
     d1 = _cuboid_rows(np.repeat(2 * hb, 8, axis=0), va_b.reshape(-1, 3)).reshape(K, 8).min(axis=1)
     d2 = _cuboid_rows(np.repeat(2 * ha, 8, axis=0), vb_a.reshape(-1, 3)).reshape(K, 8).min(axis=1)
-    # edges of both boxes in b's frame
-    p0, p1 = va_b[:, _EDGES[:, 0]], va_b[:, _EDGES[:, 1]]  # (K, 12, 3)
-    q0, q1 = vb[:, _EDGES[:, 0]], vb[:, _EDGES[:, 1]]
-    d3 = segment_distance(p0[:, :, None], p1[:, :, None], q0[:, None], q1[:, None]).reshape(K, -1).min(axis=1)
-    return np.minimum(np.minimum(d1, d2), d3)
+    out = np.minimum(d1, d2)
+    if edge_margin is not None:  # edges matter only where the vertex bound is not yet enough
+        need = np.flatnonzero(out > edge_margin)
+    else:
+        need = np.arange(K)
+    if len(need):
+        # edges of both boxes in b's frame
+        p0, p1 = va_b[need][:, _EDGES[:, 0]], va_b[need][:, _EDGES[:, 1]]  # (k, 12, 3)
+        q0, q1 = vb[need][:, _EDGES[:, 0]], vb[need][:, _EDGES[:, 1]]
+        d3 = segment_distance(p0[:, :, None], p1[:, :, None], q0[:, None], q1[:, None]).reshape(len(need), -1)
+        out[need] = np.minimum(out[need], d3.min(axis=1))
+    return out
 
 
 def segment_distance(p0, p1, q0, q1) -> np.ndarray:

@@ -222,7 +222,11 @@ def load_urdf_geometry(urdf, rng: np.random.Generator) -> tuple[Kinematics, Piec
                 if not 1 < len(parts) <= MAX_COMPONENTS or not all(p.is_watertight for p in parts):
                     parts = [m]
                 for piece in parts:
-                    meshes.append((li, pi, piece, T))
+                    box = _as_box(piece)
+                    if box is not None:  # boxes get the exact box-box tests
+                        prims.append((li, pi, Cuboid, box[0], T @ box[1]))
+                    else:
+                        meshes.append((li, pi, piece, T))
     M = len(prims) + len(meshes)
     if M == 0:
         raise ValueError(f"{urdf}: no visual geometry")
@@ -245,6 +249,18 @@ def load_urdf_geometry(urdf, rng: np.random.Generator) -> tuple[Kinematics, Piec
         b = m.bounds
         center[i], half[i] = 0.5 * (b[0] + b[1]), 0.5 * (b[1] - b[0])
     return kin, Pieces(link, part, Ts, center, half, geom, params, part_names, np.array(part_link), rng, mesh_map)
+
+
+def _as_box(mesh):
+    """(extents (3,), pose (4, 4)) when ``mesh`` is a closed box (8 corners), else None."""
+    v = np.unique(np.round(np.asarray(mesh.vertices), 9), axis=0)
+    if len(v) != 8 or not mesh.is_watertight:
+        return None
+    obb = mesh.bounding_box_oriented
+    ext = np.asarray(obb.primitive.extents, dtype=float)
+    if ext.min() <= 0 or abs(obb.volume - abs(mesh.volume)) > 1e-6 * obb.volume:
+        return None
+    return tuple(ext), np.asarray(obb.primitive.transform, dtype=float)
 
 
 def _mesh_path(urdf: Path, filename: str) -> Path:

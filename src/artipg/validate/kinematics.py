@@ -72,6 +72,10 @@ class Kinematics:
 
     def movable(self) -> np.ndarray:
         """Indices of links whose parent joint can move."""
+        return self._movable
+
+    @cached_property
+    def _movable(self) -> np.ndarray:
         return np.array([i for i, t in enumerate(self.joint_types) if t in MOVABLE], dtype=np.int64)
 
     def poses(self, q: dict | None = None) -> np.ndarray:

@@ -5,8 +5,12 @@ check fails, perturbs the recorded parameters of the parts at fault (see
 :mod:`artipg.validate.blame`) within their valid ranges and regenerates with those
 overrides, so dependent parameters follow the rules. A candidate is accepted by the
 Metropolis rule on the penalty (total penetration depth + gaps, metres) at a
-temperature that cools geometrically; the set of blamed parameters widens when the
-search stalls. When the budget runs out the object is replaced by a fresh sample
+temperature that cools geometrically. Moves: for every new set of blamed
+parameters, first the ends of their ranges and their other options one at a time
+(a conflict often resolves at the thinnest, widest or lowest setting, or with the
+other hinge side); then random steps of one or two parameters, a move that improved
+the penalty being repeated with twice the step (pattern search). The blamed set
+widens when the search stalls. When the budget runs out the object is replaced by a fresh sample
 from a derived seed (:func:`replacement_seed`), which is repaired the same way.
 
 Everything is deterministic for a given (category, seed, overrides): the annealing
@@ -41,6 +45,9 @@ class RepairBudget:
         Fresh samples tried after the original seed's budget is spent.
     patience : int
         Iterations without a new best penalty before the blamed set widens.
+    probes : int
+        Single-parameter moves (range ends, other options) tried first whenever the
+        blamed set changes.
     t0 : float
         Initial temperature as a fraction of the initial penalty.
     cooling : float
@@ -49,7 +56,8 @@ class RepairBudget:
 
     iterations: int = 48
     replacements: int = 4
-    patience: int = 6
+    patience: int = 8
+    probes: int = 12
     t0: float = 0.3
     cooling: float = 0.9
 
@@ -139,6 +147,7 @@ def anneal(category, seed: int, overrides: dict, tol: Tolerances, budget: Repair
     T0 = budget.t0 * max(cur[3], 1e-4)
     T = T0
     level, stall, top = 0, 0, max_level(obj)
+    momentum, probed, probes = None, None, []
     for it in range(1, budget.iterations + 1):
         ov, o, r, pen = cur
         parts = sorted({p for i in r.issues for p in (i.parts or _link_parts(o, i.links))})
@@ -148,13 +157,29 @@ def anneal(category, seed: int, overrides: dict, tol: Tolerances, budget: Repair
             names = blame(o, parts, level)
         if not names:
             break
+        key = (level, tuple(names))
+        if key != probed:  # a new blame set: first try each parameter's extremes / options
+            probed, probes = key, _probes(o, names, rng, budget.probes)
         new_ov = dict(ov)
-        for n in _pick(o, names, rng, discrete=level > 0):
-            new_ov[n] = _propose(o.params[n], rng, T / T0)
+        if probes:
+            n, v = probes.pop()
+            if n in o.params:
+                new_ov[n] = v
+        elif momentum is not None and momentum[0] in o.params and rng.random() < 0.6:
+            # pattern move: repeat the last improving step, twice as long
+            n, step = momentum
+            p = o.params[n]
+            new_ov[n] = float(min(p.hi, max(p.lo, p.value + 2.0 * step)))
+        else:
+            for n in _pick(o, names, rng):
+                new_ov[n] = _propose(o.params[n], rng, T / T0)
+        moved = [n for n in new_ov if new_ov[n] != ov.get(n) and n in o.params]
         o2 = category.generate(seed, new_ov)
         r2 = check_object(o2, tol)
         pen2 = r2.penalty()
         log["iterations"] = it
+        single = len(moved) == 1 and o.params[moved[0]].kind == "uniform" and moved[0] in o2.params
+        momentum = (moved[0], o2.params[moved[0]].value - o.params[moved[0]].value) if single and pen2 < pen else None
         if r2.ok or pen2 <= pen or rng.random() < math.exp(-(pen2 - pen) / max(T, 1e-12)):
             cur = (new_ov, o2, r2, pen2)
             log["accepted"] += 1
@@ -180,16 +205,28 @@ def _link_parts(obj, link_names) -> list[str]:
     return [p.name for lk in obj.links if lk.name in names for p in lk.parts]
 
 
-def _pick(obj, names, rng, discrete: bool = True) -> list[str]:
-    """One or two parameters, continuous ones three times as likely as discrete ones.
+def _probes(obj, names, rng, limit: int) -> list[tuple[str, object]]:
+    """Single-parameter moves tried first for a new set of blamed parameters: both
+    ends of each continuous range, the other options of each discrete draw (at most
+    ``limit``, in a random order; popped from the end)."""
+    moves = []
+    for n in names:
+        p = obj.params[n]
+        if p.kind == "uniform":
+            moves += [(n, float(v)) for v in (p.lo, p.hi) if v != p.value]
+        elif p.kind == "integer":
+            moves += [(n, int(v)) for v in (p.value - 1, p.value + 1) if p.lo <= v <= p.hi]
+        elif p.kind == "flag":
+            moves.append((n, not p.value))
+        else:
+            moves += [(n, o) for o in p.options if o != p.value]
+    order = rng.permutation(len(moves))[:limit]
+    return [moves[i] for i in order]
 
-    Changing a discrete draw (a template choice, a count) re-randomises the rest of
-    its slot's stream, so with ``discrete=False`` only continuous ones are picked
-    when there are any.
-    """
-    cont = [n for n in names if obj.params[n].kind == "uniform"]
-    if not discrete and cont:
-        names = cont
+
+def _pick(obj, names, rng) -> list[str]:
+    """One or two parameters, continuous ones three times as likely as discrete ones
+    (a different template or count can re-randomise the rest of its slot)."""
     w = np.array([3.0 if obj.params[n].kind == "uniform" else 1.0 for n in names])
     k = 2 if len(names) > 1 and rng.random() < 0.3 else 1
     idx = rng.choice(len(names), size=k, replace=False, p=w / w.sum())
@@ -199,12 +236,17 @@ def _pick(obj, names, rng, discrete: bool = True) -> list[str]:
 def _propose(p, rng, heat: float):
     """A new value for recorded parameter ``p`` within its recorded range.
 
-    Uniform: a Gaussian step of (0.05 + 0.3 * heat) of the range, or a uniform jump
-    (probability 0.2); integer: +-1; choice: another option; flag: flipped.
+    Uniform: one end of the range (probability 0.15: conflicts often resolve at the
+    thinnest / widest / lowest setting), a uniform jump (0.25), else a Gaussian step
+    of (0.05 + 0.3 * heat) of the range; integer: +-1; choice: another option;
+    flag: flipped.
     """
     if p.kind == "uniform":
         lo, hi = float(p.lo), float(p.hi)
-        if rng.random() < 0.2:
+        u = rng.random()
+        if u < 0.15:
+            return hi if rng.random() < 0.5 else lo
+        if u < 0.4:
             return lo + rng.random() * (hi - lo)
         return float(min(hi, max(lo, p.value + rng.normal() * (0.05 + 0.3 * heat) * (hi - lo))))
     if p.kind == "integer":

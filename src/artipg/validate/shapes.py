@@ -252,11 +252,13 @@ def _rect_ring_boxes(P: np.ndarray):
     each, in the order of :meth:`artipg.geometry.RectRing.pieces`."""
     ox, oy, d, ix, iy = P.T
     bx, by = (ox - ix) / 2, (oy - iy) / 2
-    z = np.zeros_like(ox)
-    sizes = np.stack([np.column_stack([ox, by, d]), np.column_stack([ox, by, d]),
-                      np.column_stack([bx, iy, d]), np.column_stack([bx, iy, d])], axis=1)
-    offs = np.stack([np.column_stack([z, (iy + by) / 2, z]), np.column_stack([z, -(iy + by) / 2, z]),
-                     np.column_stack([(ix + bx) / 2, z, z]), np.column_stack([-(ix + bx) / 2, z, z])], axis=1)
+    sizes = np.empty((len(P), 4, 3))
+    offs = np.zeros((len(P), 4, 3))
+    sizes[:, :2, 0], sizes[:, :2, 1] = ox[:, None], by[:, None]
+    sizes[:, 2:, 0], sizes[:, 2:, 1] = bx[:, None], iy[:, None]
+    sizes[:, :, 2] = d[:, None]
+    offs[:, 0, 1], offs[:, 1, 1] = (iy + by) / 2, -(iy + by) / 2
+    offs[:, 2, 0], offs[:, 3, 0] = (ix + bx) / 2, -(ix + bx) / 2
     return sizes.reshape(-1, 3), offs.reshape(-1, 3)
 
 

@@ -12,11 +12,13 @@ For each engine (short simulations, a few hundred milliseconds per object):
   mesh of a URDF with a fixed 1 mm collision margin (:data:`PYBULLET_MESH_MARGIN`),
   so touching meshes read as up to 2 mm deep there and its tolerance is 2 mm
   wider; MuJoCo measures the exported geometry exactly;
-- **drop**: the object, free on a floor with its joints held at rest, moves less
-  than ``drift_tol`` in ``drop_seconds`` (largest displacement of the corners of the
-  root link's bounding box); the engines' default contact filters apply here;
-- **drive**: with the root fixed and contacts frictionless (so that only geometry
-  can block a joint, not friction between touching parts), position control drives
+- **drop**: the object, free on a floor with its joints held at rest, settles for
+  ``settle_seconds`` and then moves less than ``drift_tol`` in ``drop_seconds``
+  (largest displacement of the corners of the root link's bounding box); the
+  engines' default contact filters apply here;
+- **drive**: with the root fixed, contacts frictionless and gravity off (so that only
+  geometry can block a joint, not friction between touching parts or a servo too
+  weak to lift a lid), position control drives
   all movable joints to their upper limits, then to their lower limits (continuous
   joints: +-π/2); each must get within ``joint_tol`` of its target. Joints that do
   not are driven again alone to tell a blocked joint from one that only interferes
@@ -51,8 +53,10 @@ class SimOptions:
     ----------
     engines : tuple of str
         ``"pybullet"`` and / or ``"mujoco"``.
+    settle_seconds : float
+        Time the object settles into its contacts before the drift is measured.
     drop_seconds : float
-        Simulated time on the floor.
+        Simulated time on the floor over which the drift is measured.
     drift_tol : float
         Largest accepted displacement on the floor, metres.
     drive_seconds : float
@@ -65,6 +69,7 @@ class SimOptions:
     """
 
     engines: tuple = ("pybullet", "mujoco")
+    settle_seconds: float = 0.25
     drop_seconds: float = 1.0
     drift_tol: float = 1e-3
     drive_seconds: float = 1.0
@@ -176,6 +181,8 @@ def _pybullet_run(pb, cid, urdf, joints, opts):
     dt = 1.0 / 240.0
     pb.setGravity(0, 0, -9.81, physicsClientId=cid)
     pb.setTimeStep(dt, physicsClientId=cid)
+    # leave the margin overlap of touching meshes alone instead of pushing them apart
+    pb.setPhysicsEngineParameter(contactSlop=2 * PYBULLET_MESH_MARGIN + 5e-4, physicsClientId=cid)
     body = pb.loadURDF(str(urdf), useFixedBase=True, flags=flags, physicsClientId=cid)
     n = pb.getNumJoints(body, physicsClientId=cid)
     index = {pb.getJointInfo(body, i, physicsClientId=cid)[1].decode(): i for i in range(n)}
@@ -195,7 +202,9 @@ def _pybullet_run(pb, cid, urdf, joints, opts):
                                     detail="pybullet: collision geometry penetrates at rest"))
     info["rest_penetration"] = worst
     mov = [index[j.name] for j in joints if j.name in index]
-    # drive: all joints to their upper then lower targets, root fixed, frictionless
+    # drive: all joints to their upper then lower targets, root fixed, frictionless,
+    # no gravity (only geometry may stop a joint)
+    pb.setGravity(0, 0, 0, physicsClientId=cid)
     for i in range(-1, n):
         pb.changeDynamics(body, i, lateralFriction=0.0, spinningFriction=0.0, rollingFriction=0.0,
                           physicsClientId=cid)
@@ -205,6 +214,7 @@ def _pybullet_run(pb, cid, urdf, joints, opts):
         issues.append(Issue("simulator", "joint_blocked", abs(reached - target), joint=j.name, q=reached,
                             detail=f"pybullet: target {target:.4g} not reached"))
     pb.removeBody(body, physicsClientId=cid)
+    pb.setGravity(0, 0, -9.81, physicsClientId=cid)
     # drop on a floor, joints held at rest (the joints' own contacts were checked above)
     plane = pb.createCollisionShape(pb.GEOM_PLANE, physicsClientId=cid)
     pb.createMultiBody(0, plane, physicsClientId=cid)
@@ -214,6 +224,8 @@ def _pybullet_run(pb, cid, urdf, joints, opts):
                                      forces=[200.0] * len(mov), physicsClientId=cid)
     lo, hi = pb.getAABB(body, -1, physicsClientId=cid)
     corners = _corners(lo, hi)
+    for _ in range(int(round(opts.settle_seconds / dt))):
+        pb.stepSimulation(physicsClientId=cid)
     T0 = _pb_pose(pb, cid, body)
     for _ in range(int(round(opts.drop_seconds / dt))):
         pb.stepSimulation(physicsClientId=cid)
@@ -307,11 +319,11 @@ def _mj_model(mujoco, path, joints, free: bool, parent_contacts: bool = True):
     d = mujoco.MjData(m)
     mujoco.mj_forward(m, d)
     # servo gains from each joint's own inertia and damping: critically damped, at
-    # least 2 Hz, at most a quarter of the step rate (explicit stiffness stays stable)
+    # least 4 Hz, at most a quarter of the step rate (explicit stiffness stays stable)
     for a in range(m.nu):
         dof = m.jnt_dofadr[m.actuator_trnid[a, 0]]
         inertia, damping = m.dof_M0[dof] + 1e-9, m.dof_damping[dof]
-        w = min(max(damping / (2.0 * inertia), 4.0 * math.pi), 0.25 / m.opt.timestep)
+        w = min(max(damping / (2.0 * inertia), 8.0 * math.pi), 0.25 / m.opt.timestep)
         kp, kv = inertia * w * w, max(2.0 * inertia * w - damping, 0.0)
         m.actuator_gainprm[a, 0] = kp
         m.actuator_biasprm[a, 1] = -kp
@@ -334,8 +346,11 @@ def _mujoco_run(mujoco, path, joints, opts):
             issues.append(Issue("simulator", "sim_rest_penetration", -float(c.dist), [body(b1), body(b2)],
                                 detail="mujoco: collision geometry penetrates at rest"))
     info["rest_penetration"] = worst
-    # drive, root welded to the world, frictionless
+    # drive, root welded to the world, frictionless (condim 1: a zero friction
+    # coefficient alone still resists sliding in MuJoCo's solver), no gravity
     m.geom_friction[:] = 0.0
+    m.geom_condim[:] = 1
+    m.opt.gravity[:] = 0.0
     act = {mujoco.mj_id2name(m, mujoco.mjtObj.mjOBJ_JOINT, int(m.actuator_trnid[a, 0])): a for a in range(m.nu)}
     qadr = {j.name: m.jnt_qposadr[mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_JOINT, j.name)] for j in joints
             if j.name in act}
@@ -349,6 +364,8 @@ def _mujoco_run(mujoco, path, joints, opts):
     m, d = _mj_model(mujoco, path, joints, free=True, parent_contacts=False)
     d.ctrl[:] = 0.0
     root = 1
+    for _ in range(int(round(opts.settle_seconds / m.opt.timestep))):
+        mujoco.mj_step(m, d)
     T0 = np.eye(4)
     T0[:3, :3] = d.xmat[root].reshape(3, 3)
     T0[:3, 3] = d.xpos[root]
