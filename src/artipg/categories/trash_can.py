@@ -24,7 +24,8 @@ from artipg.geometry import cuboid_between
 from artipg.geometry.transforms import rot_y, translation
 from artipg.model.part import Part
 from artipg.rules import Category, Slot
-from artipg.templates.bins import ROUND_LIDS, flat_disc_lid, pedal, rect_collar, round_collar, swing_flap, swing_hood
+from artipg.templates.bins import (ROUND_LIDS, flat_disc_lid, pedal, pedal_brackets, rect_collar, round_collar, swing_flap,
+                                  swing_hood)
 from artipg.templates.bodies import carcass, cylindrical_shell, tapered_shell
 from artipg.templates.boxes import mount_lid, open_box, raised_lid, slab_lid
 from artipg.templates.controls import button_bezel, mount_button, rect_button, round_button
@@ -113,10 +114,8 @@ def _pedal(ctx, root, b):
     z = p.uniform("pedal_height", 0.035, 0.06)
     rz = b["r0"] + (b["R"] - b["r0"]) * (z + r) / b["H"]  # wall radius at the pin (tapered bodies)
     x = -rz - r - 0.003
-    for s in (-1.0, 1.0):  # brackets holding the pin's ends, from the wall forwards
-        wall_x = -math.sqrt(max(b["r0"] ** 2 - (y + 0.006) ** 2, 0.0)) if b["round"] else -b["r0"]
-        y0, y1 = sorted((s * y, s * (y + 0.006)))
-        root.add(Part("hinge", "pedal_bracket", [cuboid_between((x - r, y0, z - r), (wall_x + 0.002, y1, z + r))]))
+    wall_x = -math.sqrt(max(b["r0"] ** 2 - (y + 0.006) ** 2, 0.0)) if b["round"] else -b["r0"]
+    root.add(pedal_brackets(ped, wall_x + 0.002 - x), translation(x, 0, z))
     link = ctx.builder.create_link("pedal", root)
     tip = -ped.anchor("tip")[0]
     lim = math.asin(min(0.9, (z + ped.anchor("tip")[2] - 0.004) / tip))

@@ -37,20 +37,30 @@ def _cell(check: dict | None, unit: float = 1e3) -> str:
     return f"{mark} {worst * unit:.1f}"
 
 
+def _short_names(paths: list[str]) -> list[str]:
+    """Paths relative to their common folder (the folder's own name for one path)."""
+    import os
+
+    if len(paths) == 1:
+        return [Path(paths[0]).name or paths[0]]
+    base = os.path.commonpath([os.path.abspath(p) for p in paths])
+    return [os.path.relpath(os.path.abspath(p), base) for p in paths]
+
+
 def _table(results: list[dict]) -> Table:
-    t = Table(title="artipg validate (worst values in mm)", show_lines=False)
-    t.add_column("object", overflow="fold")
-    t.add_column("geometry")
-    for name in ("penetration", "floating", "joint sweep", "simulator"):
+    t = Table(title="artipg validate (worst depth / gap in mm)", show_lines=False)
+    t.add_column("object", no_wrap=True)
+    t.add_column("geom.")
+    for name in ("penetration", "floating", "sweep", "simulator"):
         t.add_column(name)
     t.add_column("result")
-    for r in results:
+    for r, name in zip(results, _short_names([r["path"] for r in results])):
         c = r.get("checks", {})
         sim = c.get("simulator")
         sim_cell = "-" if sim is None else ("[green]ok[/]" if sim["ok"] else "[bold red]FAIL[/] " + ", ".join(
             sorted({i["kind"] for i in sim["issues"]})))
         result = "[green]pass[/]" if r["ok"] else f"[bold red]fail[/] {r.get('error', '')}"
-        t.add_row(r["path"], r.get("geometry", "-"), _cell(c.get("penetration")), _cell(c.get("floating")),
+        t.add_row(name, r.get("geometry", "-"), _cell(c.get("penetration")), _cell(c.get("floating")),
                   _cell(c.get("joint_sweep")), sim_cell, result)
     return t
 

@@ -59,8 +59,16 @@ class Tube:
 
     def end(self) -> tuple[np.ndarray, float]:
         """End point (3,) and heading angle of the centre line."""
-        p, a = list(self._stations())[-1]
-        return p, a
+        x = z = a = 0.0
+        for seg, (x, z), a in self._walk():
+            pass
+        if seg[0] == "line":
+            return np.array([x + np.cos(a) * seg[1], 0.0, z + np.sin(a) * seg[1]]), a
+        R, turn = seg[1], seg[2]
+        sg = R if turn > 0 else -R
+        cx, cz = x - math.sin(a) * sg, z + math.cos(a) * sg
+        b = a + turn
+        return np.array([cx + math.sin(b) * sg, 0.0, cz - math.cos(b) * sg]), b
 
     def primitives(self, pose: np.ndarray = IDENTITY, role: str = "") -> list[Primitive]:
         """The tube as open cylinders and torus arcs, capped at both ends, in ``pose``."""

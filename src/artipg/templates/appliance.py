@@ -18,7 +18,7 @@ import numpy as np
 
 from artipg.geometry import cuboid, cuboid_between, cylinder, rect_ring
 from artipg.geometry.transforms import rot_y, translation
-from artipg.model.part import Grasp, Part, Region
+from artipg.model.part import Part, Region
 from artipg.templates.panels import door_edge_grasps
 
 _FRAME_TO_X = rot_y(np.pi / 2)  # rect ring's z (thickness) -> x
@@ -136,9 +136,7 @@ def turntable(p, radius: float) -> Part:
     hub_h = p.uniform("hub_height", 0.008, 0.02)
     prims = [cylinder(hub_r, hub_h, translation(0, 0, hub_h / 2), role="hub"),
              cylinder(radius, t, translation(0, 0, hub_h + t / 2), role="plate")]
-    # pinch the plate rim from the front, jaws along z
-    T = np.array([[0.0, 0.0, 1.0, -radius + 0.01], [1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, hub_h + t / 2],
-                  [0.0, 0.0, 0.0, 1.0]])
+    # no grasp: the plate sits 8-20 mm above the cavity floor, too low for a finger
+    # under its rim; it is turned by pushing its top (rotate region)
     return Part("turntable", "turntable", prims, anchors={"top": (0.0, 0.0, hub_h + t)},
-                regions={"rotate": Region(("plate",)), "grasp": Region(("plate",)), "lift": Region(("plate",))},
-                grasps=[Grasp(T, t + 0.02, np.array([0.0, 0.0, 1.0]))])
+                regions={"rotate": Region(("plate",))})

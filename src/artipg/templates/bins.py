@@ -126,3 +126,12 @@ def rect_collar(p, depth: float, width: float, opening_depth: float, opening_wid
              cuboid_between((x0, -W, 0), (x1, -ow, h), role="collar"), cuboid_between((x0, ow, 0), (x1, W, h),
                                                                                       role="collar")]
     return Part("body", "rect_collar", prims, anchors={"opening": (od, ow, h), "button": ((x0 - D) / 2, 0.0, h)})
+
+
+def pedal_brackets(pedal_part: Part, reach: float) -> Part:
+    """Two plates holding the ends of a pedal's pivot pin, reaching ``reach`` metres
+    back (+x) from the pivot axis into the body's wall; in the pedal's pivot frame,
+    for the body's link."""
+    r, y = pedal_part.anchor("pin")[0], pedal_part.anchor("pin")[1]
+    prims = [cuboid_between((-r, lo, -r), (reach, lo + 0.006, r), role="bracket") for lo in (y, -y - 0.006)]
+    return Part("hinge", "pedal_brackets", prims)

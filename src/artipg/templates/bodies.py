@@ -13,7 +13,6 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
 
 from artipg.geometry import cuboid_between, cylinder, frustum, prism, ring
 from artipg.geometry.transforms import rot_z, translation

@@ -50,7 +50,7 @@ def bar_handle(p, length: float | None = None) -> Part:
     x_bar = -standoff
     prims = [cylinder(r, L, translation(x_bar, 0, 0), role="grip")]
     for s in (-1.0, 1.0):
-        T = translation(x_bar / 2 - r / 2, 0, s * (L / 2 - inset - post_r)) @ _X_AXIS
+        T = translation(x_bar / 2 + r / 2, 0, s * (L / 2 - inset - post_r)) @ _X_AXIS  # spans x in [x_bar + r, 0]
         prims.append(cylinder(post_r, standoff - r, T, role="post"))
     return Part("handle", "bar_handle", prims, regions={"grasp": Region(("grip",)), "pull": Region(("grip",))},
                 grasps=_grasps_along_z(x_bar, -L / 3, L / 3, 4 * r + 0.02), actionable="line_fixed_handle")

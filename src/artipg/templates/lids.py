@@ -57,7 +57,9 @@ def _base(p, radius, sides, skirt_p):
     s = 0.0
     if sides is None and p.flag("skirt", skirt_p):
         s = p.uniform("skirt_length", 0.006, 0.015)
-        prims.append(ring(R, radius + 0.5 * (R - radius), s, pose=translation(0, 0, -s / 2), role="skirt"))
+        # wall at least 1.5 mm (simulators reject thinner meshes), >= 0.5 mm off the rim
+        wall = max(0.0015, 0.5 * (R - radius))
+        prims.append(ring(R, R - wall, s, pose=translation(0, 0, -s / 2), role="skirt"))
     return R, t, s, prims
 
 

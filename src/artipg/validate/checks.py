@@ -8,8 +8,9 @@ over three kinds of scenes:
   included) and the contact graphs of links and of the parts inside each link;
 - *sweep*: each movable joint at ``sweep_poses`` values over its range (continuous:
   a full turn), its subtree moving and everything else at rest;
-- *open*: all joints together at half and at full opening, for objects with
-  several movable joints (two doors of one cabinet, a drawer under a lid).
+- *open*: all joints together at the upper end of their ranges (continuous: a half
+  turn), for objects with several movable joints (two doors of one cabinet, a
+  drawer under a lid); only pairs of links whose relative pose changed are tested.
 
 Penetration depth is minus the lowest signed distance of one piece's surface samples
 to another piece (both directions); a gap is the lowest positive one.
@@ -133,19 +134,18 @@ def _sweep_pairs(kin, pieces, rest, W0, c0, h0, tol) -> dict:
     cm, hm = world_boxes(pieces, Wm, p_idx)
     # swept box of each (joint, moving piece) over all its poses
     key = scene_joint[s_idx] * pieces.n + p_idx
-    ukey, inv = np.unique(key, return_inverse=True)
-    lo = np.full((len(ukey), 3), np.inf)
-    hi = np.full((len(ukey), 3), -np.inf)
-    np.minimum.at(lo, inv, cm - hm)
-    np.maximum.at(hi, inv, cm + hm)
+    order = np.argsort(key, kind="stable")
+    ks = key[order]
+    starts = np.flatnonzero(np.r_[True, ks[1:] != ks[:-1]])
+    ukey = ks[starts]
+    counts = np.diff(np.r_[starts, len(ks)])
+    lo = np.minimum.reduceat((cm - hm)[order], starts)
+    hi = np.maximum.reduceat((cm + hm)[order], starts)
     cand = overlapping(0.5 * (lo + hi), 0.5 * (hi - lo), c0, h0, -_OVERLAP) & ~moving[ukey // pieces.n]
     u, b = np.nonzero(cand)
     if not len(u):
         return out
     # expand the candidates over the poses of their joint and test per-pose boxes
-    order = np.argsort(inv, kind="stable")
-    starts = np.searchsorted(inv[order], np.arange(len(ukey)))
-    counts = np.bincount(inv, minlength=len(ukey))
     n_rep = counts[u]
     rows = order[np.repeat(starts[u], n_rep) + (np.arange(n_rep.sum()) - np.repeat(np.cumsum(n_rep) - n_rep, n_rep))]
     bb = np.repeat(b, n_rep)
@@ -214,19 +214,20 @@ def _penetration(kin, pieces, s, tol) -> CheckResult:
 
 def _components(n: int, i: np.ndarray, j: np.ndarray) -> np.ndarray:
     """Connected-component label (n,) of every node of the undirected edges (i, j):
-    the smallest node index of its component (min-label propagation)."""
-    lab = np.arange(n)
-    if not len(i):
-        return lab
-    while True:
-        m = np.minimum(lab[i], lab[j])
-        new = lab.copy()
-        np.minimum.at(new, i, m)
-        np.minimum.at(new, j, m)
-        new = new[new]  # pointer jumping
-        if np.array_equal(new, lab):
-            return lab
-        lab = new
+    the smallest node index of its component (union-find; graphs here are small)."""
+    parent = list(range(n))
+
+    def root(x):
+        while parent[x] != x:
+            parent[x] = parent[parent[x]]
+            x = parent[x]
+        return x
+
+    for a, b in zip(i.tolist(), j.tolist()):
+        ra, rb = root(a), root(b)
+        if ra != rb:
+            parent[max(ra, rb)] = min(ra, rb)
+    return np.array([root(x) for x in range(n)], dtype=np.int64)
 
 
 def _gap(pieces, W0, src_mask, tgt_mask) -> float:

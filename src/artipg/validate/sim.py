@@ -28,6 +28,7 @@ For each engine (short simulations, a few hundred milliseconds per object):
 from __future__ import annotations
 
 import math
+import os
 import re
 import tempfile
 import xml.etree.ElementTree as ET
@@ -157,9 +158,26 @@ def _drift(T0: np.ndarray, T1: np.ndarray, corners: np.ndarray) -> float:
 
 # ------------------------------------------------------------------ pybullet
 
-def _pybullet(urdf: Path, joints: list[_Joint], opts: SimOptions):
-    import pybullet as pb
+def _import_pybullet():
+    """Import pybullet without the build-time banner it prints (from C, to stderr)."""
+    import sys
 
+    if "pybullet" in sys.modules:
+        return sys.modules["pybullet"]
+    sys.stderr.flush()
+    saved = os.dup(2)
+    try:
+        with open(os.devnull, "w") as null:
+            os.dup2(null.fileno(), 2)
+            import pybullet
+    finally:
+        os.dup2(saved, 2)
+        os.close(saved)
+    return pybullet
+
+
+def _pybullet(urdf: Path, joints: list[_Joint], opts: SimOptions):
+    pb = _import_pybullet()
     cid = pb.connect(pb.DIRECT)
     try:
         return _pybullet_run(pb, cid, urdf, joints, opts)
