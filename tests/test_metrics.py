@@ -241,7 +241,7 @@ def test_shipped_encoder_fid_self_zero_and_grows_across_categories(encoder):
         gap = np.linalg.norm(means - means[i], axis=1)
         gap[i] = np.inf
         for j in {(i + 1) % len(cats), int(np.argmin(gap))}:
-            assert fid(feats[c], feats[cats[j]]) > 1.5 * same, (c, cats[j])
+            assert fid(feats[c], feats[cats[j]]) > 3 * same, (c, cats[j])
 
 
 def test_shipped_encoder_classifies_its_categories(encoder):

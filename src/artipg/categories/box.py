@@ -47,15 +47,15 @@ def body(ctx):
     D, H, t = min(0.4, p.uniform("depth_ratio", *d) * W), p.uniform("height", *h), p.uniform("wall", *t)
     root = ctx.builder.create_link("body")
     z0 = 0.0
-    if ctx.sub == "chest" and p.flag("support", 0.7):
+    if ctx.sub == "chest" and p.flag("has_support", 0.7):
         z0 = p.uniform("support_height", 0.03, 0.12)
         root.add(ctx.choose("support", SUPPORTS)(p.scope("support"), D, W, z0))
     if ctx.sub == "sliding_lid_box":
         lid_t = p.uniform("lid_thickness", 0.004, min(0.01, 0.2 * H))
-        return root, root.add(grooved_box(p, D, W, H, lid_t, wall=t)), (D, W, H, t, 0.0, lid_t)
+        return root, root.add(grooved_box(p.scope("shell"), D, W, H, lid_t, wall=t)), (D, W, H, t, 0.0, lid_t)
     bay = p.uniform("bay", 0.3, 0.45) * H if ctx.sub in ("hinged_box", "chest") and H > 0.1 and p.flag(
         "drawers", 0.4) else 0.0
-    return root, root.add(open_box(p, D, W, H, wall=t, z0=z0, bay=bay)), (D, W, H + z0, t, z0, bay)
+    return root, root.add(open_box(p.scope("shell"), D, W, H, wall=t, z0=z0, bay=bay)), (D, W, H + z0, t, z0, bay)
 
 
 def lids(ctx):
@@ -101,7 +101,7 @@ def _sliding(ctx, root, part, D, W, lid_t):
                regions={"push": Region(("top",))}, actionable="slider_lid")
     link = mount_sliding(ctx.builder, root, lid, origin=translation(-D / 2, 0, zg + 0.001),
                          limits=(0.0, p.uniform("travel", 0.6, 0.85) * L), name="lid")
-    if p.flag("knob", 0.5):
+    if p.flag("has_knob", 0.5):
         k = ctx.choose("knob", {knob_pull: 1.0, ball_knob_pull: 1.0})(p.scope("knob"))
         link.add(k, translation(0.15 * L, 0, lid_t) @ rot_y(math.pi / 2))
     else:
@@ -117,10 +117,10 @@ def extras(ctx):
         link, lid = ctx.out["lids"]
         cw, ch = p.uniform("clasp_width", 0.012, 0.03), p.uniform("clasp_drop", 0.01, 0.025)
         x = lid.anchor("front")[0]  # a plate on the lid's front face hanging over the body
-        link.add(Part("handle", "clasp", [cuboid_between((x - 0.003, -cw / 2, -ch), (x, cw / 2, 0.8 * lid.bounds()[1][2]),
+        link.add(Part("handle", "clasp", [cuboid_between((x - 0.003, -cw / 2, -ch), (x, cw / 2, 0.8 * lid.anchor("top")[2]),
                                                          role="grip")], regions={"lift": Region(("grip",))}))
     if ctx.sub == "chest" and p.flag("side_handles", 0.6):
-        tmpl, hl = ctx.choose("side_handle", {arch_handle: 1.0, flat_bar_handle: 1.0}), p.uniform("side_handle", 0.1, 0.16)
+        tmpl, hl = ctx.choose("side_handle", {arch_handle: 1.0, flat_bar_handle: 1.0}), p.uniform("side_handle_length", 0.1, 0.16)
         for i, s in enumerate((1.0, -1.0)):
             pose = translation(0, s * W / 2, top - 0.12) @ rot_z(-s * math.pi / 2) @ rot_x(math.pi / 2)
             root.add(tmpl(p.scope(f"side_handle{i}"), length=hl), pose)

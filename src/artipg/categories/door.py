@@ -10,7 +10,7 @@ glazed with glass lites) inset flush with the frame front, each hinged on a jamb
 (revolute 0..pi/2) with a fixed key cylinder on the front. A barn door is a leaf hung
 in front of a cased opening by straps and rollers on a rail over a header board; it
 slides sideways (prismatic along y, about one leaf width) and has a fixed pull.
-Joints: 1-9 movable. Sizes (metres): leaves 0.7-0.95 x 1.95-2.1 (double doors
+Joints: 1-6 movable. Sizes (metres): leaves 0.7-0.95 x 1.95-2.1 (double doors
 0.55-0.9 per leaf), 35-45 mm thick; barn doors 0.8-1.1 wide.
 """
 
@@ -27,7 +27,7 @@ from artipg.templates.frames import barn_hardware, door_frame, glazed_panel, pan
 from artipg.templates.handles import arch_handle, flat_bar_handle
 from artipg.templates.mounting import free_edge_yz, mount_hinged, mount_sliding
 from artipg.templates.panels import slab_door
-from artipg.templates.turn_handles import DOOR_KNOBS, DOOR_LEVERS, mount_turning, thumb_turn
+from artipg.templates.turn_handles import DOOR_KNOBS, DOOR_LEVERS, matching, mount_turning, thumb_turn
 
 # sub-category -> leaves (lo, hi), leaf width, leaf height
 SIZES = {"single_door": ((1, 1), (0.7, 0.95), (1.95, 2.1)), "double_door": ((2, 2), (0.55, 0.9), (1.95, 2.2)),
@@ -102,12 +102,15 @@ def hardware(ctx):
     lim = (0.0, a) if lever else (-a, a)
     hz = p.uniform("handle_height", 0.9, 1.05) - d["under"] - d["H"] / 2
     lock = d["n"] == 1 and p.flag("deadbolt", 0.4)
-    for i, (link, leaf, side, s) in enumerate(ctx.out["leaves"]):
-        hy, _ = free_edge_yz(side, (d["W"], d["H"]), p.uniform(f"backset{i}", 0.06, 0.07))
+    leaves, backset = ctx.out["leaves"], p.uniform("backset", 0.06, 0.07)
+    # one hardware design on both faces of every leaf, levers pointing to the hinges
+    handles = iter(matching(tmpl, p.scope("handle"), [sg * s for *_, s in leaves for sg in (1.0, -1.0)]))
+    for link, leaf, side, s in leaves:
+        hy, _ = free_edge_yz(side, (d["W"], d["H"]), backset)
         front = leaf.pose @ translation(-d["t"], hy, hz)
         back = leaf.pose @ translation(0.0, hy, hz) @ rot_z(math.pi)
-        for face, T, sgn in (("front", front, s), ("back", back, -s)):
-            mount_turning(ctx.builder, link, tmpl(p.scope(f"handle{i}_{face}"), side=sgn), T, lim, name="handle")
+        for T in (front, back):
+            mount_turning(ctx.builder, link, next(handles), T, lim, name="handle")
         if lock:
             dz = p.uniform("deadbolt_offset", 0.12, 0.18)
             mount_turning(ctx.builder, link, thumb_turn(p.scope("thumb_turn")), back @ translation(0, 0, dz),

@@ -31,45 +31,37 @@ _FACE_UP = rot_y(math.pi / 2)  # control frame (surface normal -x) -> surface no
 
 def base(ctx):
     p = ctx.p
-    w, d, h, *_ = SIZES[ctx.sub]
-    W, D = p.uniform("width", *w), p.uniform("depth", *d)
-    root = ctx.builder.create_link("base")
-    part = root.add(laptop_base(p, W, D, p.uniform("thickness", *h)))
-    return root, part, W, D
-
-
-def deck(ctx):
-    root, part, W, D = ctx.out["base"]
-    p = ctx.p
-    z = part.anchor("deck")[2]
-    power = p.flag("power_button", 0.5)  # above the keyboard, clear of the lid's rim
+    w, d, h, _, pad = SIZES[ctx.sub]
+    W, D, H = p.uniform("width", *w), p.uniform("depth", *d), p.uniform("thickness", *h)
+    power = p.flag("power_button", 0.5)  # behind the keyboard, clear of the lid's rim
     side, back = p.uniform("side_margin", 0.012, 0.03), p.uniform("back_margin", *((0.032, 0.04) if power else
                                                                                    (0.012, 0.03)))
-    kd = p.uniform("keyboard_depth", 0.38, 0.46) * D
-    kh = p.uniform("key_height", 0.0008, 0.0015)
-    kb = ctx.choose("keyboard", KEYBOARDS)(p.scope("keyboard"), W - 2 * side, kd, kh)
+    kd, kw = p.uniform("keyboard_depth", 0.38, 0.46) * D, W - 2 * side
     xk = D / 2 - back - kd  # keyboard front edge
-    root.add(kb, translation(xk + kd / 2, 0, z))
-    tops = [kh]
-    palm = xk + D / 2 - 0.008
-    if ctx.sub == "business":  # three buttons between the keyboard and the touchpad
-        bw, bd = p.uniform("pad_width", *SIZES[ctx.sub][4]) * W, p.uniform("button_depth", 0.008, 0.012)
-        xb = xk - 0.004 - bd / 2
-        for i in range(3):
-            tops.append(_button(ctx, root, rect_button, p.scope(f"pad_button{i}"),
-                                translation(xb, (i - 1) * bw / 3, z) @ _FACE_UP, width=bw / 3 - 0.006, height=bd))
+    palm = xk + D / 2 - 0.008  # palm rest depth in front of it
+    bw = p.uniform("pad_width", *pad) * W
+    bd = p.uniform("button_depth", 0.008, 0.012) if ctx.sub == "business" else 0.0
+    if bd:  # three touchpad buttons between the keyboard and the touchpad
         palm -= bd + 0.006
-    else:
-        bw = p.uniform("pad_width", *SIZES[ctx.sub][4]) * W
     pd = p.uniform("pad_depth", 0.55, 0.8) * palm
-    front = -D / 2 + p.uniform("pad_front", 0.25, 0.45) * (palm - pd) + 0.006
-    root.add(touchpad(p.scope("touchpad"), bw, pd), translation(front + pd / 2, 0, z))
+    pf = -D / 2 + p.uniform("pad_front", 0.25, 0.45) * (palm - pd) + 0.006  # touchpad front edge
+    holes = [(xk, xk + kd, -kw / 2, kw / 2), (pf, pf + pd, -bw / 2, bw / 2)]
+    root = ctx.builder.create_link("base")
+    part = root.add(laptop_base(p, W, D, H, holes))
+    z, sk = part.anchor("deck")[2], part.anchor("skin")[0]
+    kh = p.uniform("key_height", 0.0008, 0.0015)
+    root.add(ctx.choose("keyboard", KEYBOARDS)(p.scope("keyboard"), kw, kd, kh, sk), translation(xk + kd / 2, 0, z))
+    root.add(touchpad(p.scope("touchpad"), bw, pd, sk), translation(pf + pd / 2, 0, z))
+    tops = [kh]
+    for i in range(3 if bd else 0):
+        tops.append(_button(ctx, root, rect_button, p.scope(f"pad_button{i}"),
+                            translation(xk - 0.004 - bd / 2, (i - 1) * bw / 3, z) @ _FACE_UP, width=bw / 3 - 0.006,
+                            height=bd))
     if power:
         y = p.choice("power_side", (1.0, -1.0)) * (W / 2 - max(side, 0.02) - 0.01)
         tops.append(_button(ctx, root, round_button, p.scope("power"), translation(D / 2 - back / 2 - 0.003, y, z)
-                            @ _FACE_UP,
-                            radius=p.uniform("power_radius", 0.003, 0.005)))
-    return max(tops)
+                            @ _FACE_UP, radius=p.uniform("power_radius", 0.003, 0.005)))
+    return root, part, W, D, max(tops)
 
 
 def _button(ctx, root, tmpl, q, pose, **size):
@@ -82,9 +74,9 @@ def _button(ctx, root, tmpl, q, pose, **size):
 
 
 def screen(ctx):
-    root, part, W, D = ctx.out["base"]
+    root, part, W, D, top = ctx.out["base"]
     p = ctx.p
-    rim = ctx.out["deck"] + p.uniform("rim_clearance", 0.0008, 0.0015)
+    rim = top + p.uniform("rim_clearance", 0.0008, 0.0015)
     rb = part.anchor("barrel")[0]
     ax, _, az = part.anchor("hinge")
     t = p.uniform("lid_thickness", *SIZES[ctx.sub][3])
@@ -100,5 +92,5 @@ def screen(ctx):
 RULE = Category(
     name="laptop",
     subcategories={"mainstream": 3.0, "ultrabook": 2.0, "business": 1.5, "gaming": 1.0},
-    slots=(Slot("base", base), Slot("deck", deck, after=("base",)), Slot("screen", screen, after=("deck",))),
+    slots=(Slot("base", base), Slot("screen", screen, after=("base",))),
 )

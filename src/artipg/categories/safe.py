@@ -6,11 +6,11 @@ a thick stepped door (a front plate over the whole front and a plug filling the
 opening, optional barrel-hinge knuckles) hinged on the left or right front edge
 (revolute about z, 0..1.5-2.2 rad); on the door a column (or, on short safes, a row)
 of controls: a combination dial with a graduated ring (continuous about the door
-normal), a keypad housing with a display and a 4 x 3 or 4 x 4 grid of keys (each
-prismatic, pressed 3-6 mm), and a handle that retracts the bolts: a 3-5 spoke wheel,
-a lever pointing to the hinge or a round knob (revolute about the door normal,
-0..1.2-1.6 rad).
-Joints: 3-19 movable. Sizes (metres): 0.2-1.0 tall, 0.3-0.7 wide; walls 20-50 mm;
+normal), a keypad housing with a display and a 4 x 3 grid of keys (hotel safes also
+4 x 4; each key prismatic, pressed 3-6 mm), and a handle that retracts the bolts: a
+3-5 spoke wheel, a lever pointing to the hinge or a round knob (revolute about the
+door normal, 0..1.2-1.6 rad).
+Joints: 3-18 movable. Sizes (metres): 0.2-1.0 tall, 0.3-0.7 wide; walls 20-50 mm;
 doors 35-95 mm thick.
 """
 
@@ -77,23 +77,24 @@ def controls(ctx):
     for kind in SIZES[ctx.sub][4]:
         q = p.scope(kind)
         if kind == "dial":
-            dial = ctx.choose("dial", DIALS)(q, radius=q.uniform("dial_radius", 0.028, 0.045))
+            rd = q.uniform("dial_radius", 0.028, 0.045)
+            dial = ctx.choose("dial", DIALS)(q, radius=rd)
             dial.semantic = "dial"
-            r = dial.bounds()[1][1] + 0.015  # with its graduated ring
+            r = rd + 0.015  # with its graduated ring
             items.append((kind, r, r, dial))
         elif kind == "keypad":
-            rows, cols = 4, q.integers("columns", 3, 4)
+            rows, cols = 4, q.integers("columns", 3, 4 if ctx.sub == "hotel_safe" else 3)  # phone layout
             pitch, g, reach = q.uniform("pitch", 0.013, 0.02), q.uniform("gap", 0.001, 0.0018), q.uniform(
                 "reach", 0.01, 0.014)
             key = rect_button(q.scope("key"), width=pitch - g, height=0.8 * pitch - g, reach=reach)
             stand = -key.anchor("back")[0]  # the frame rises past the keys' back faces, g / 2 around them
             frame, screen = keypad_housing(q, cols * pitch, rows * 0.8 * pitch, stand + 0.4 * (reach - stand), g / 2)
-            lo, hi = frame.bounds()[1][2], screen.bounds()[1][2]  # below and above the key field's centre
-            items.append((kind, frame.bounds()[1][1], (lo + hi) / 2, (key, frame, screen, rows, cols, pitch, (hi - lo) / 2)))
+            _, hw, lo = frame.anchor("corner")
+            hi = screen.anchor("top")[2]  # the housing spans -lo..hi about the key field's centre
+            items.append((kind, hw, (lo + hi) / 2, (key, frame, screen, rows, cols, pitch, (hi - lo) / 2)))
         else:  # levers point towards the hinge
             h = ctx.choose("handle", HANDLES[ctx.sub])(q, side=s)
-            bb = h.bounds()
-            r = float(max(abs(bb[:, 1]).max(), abs(bb[:, 2]).max())) * 1.05
+            r = h.anchor("reach")[0] + 0.005
             items.append((kind, r, r, h))
     # a column towards the free edge, or a row across the door when it is short
     gap, W, H = 0.02, b["W"], b["H"]

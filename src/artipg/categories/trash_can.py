@@ -133,7 +133,7 @@ def _cabinet(ctx, root, W, D, H):
     lo, hi = body.anchor("cavity_lo"), body.anchor("cavity_hi")
     wall, g = float(body.primitives[1].params[1]), 0.003
     tilt = p.flag("tilt_out", 0.4)
-    tmpl = ctx.choose("handle", HANDLES)
+    tmpl, bin_t = ctx.choose("handle", HANDLES), ctx.choose("bin", {box_drawer: 2.0, slot_drawer: 1.0})
     cw = (W - (n - 1) * g) / n
     z0, z1 = sh + (H - sh) / 2 + lo[2] - wall, sh + (H - sh) / 2 + hi[2] + wall
     for i in range(n):
@@ -151,7 +151,7 @@ def _cabinet(ctx, root, W, D, H):
             Db = min(Db, 0.6 * Hc - 0.025)
             top = min(top, math.sqrt(Hc * Hc - (Db + 0.025) ** 2) + z0 - cz)
         opening = (iy0 - cy, iy1 - cy, z0 + wall + 0.003 - cz, top)
-        dr = ctx.choose("bin", {box_drawer: 2.0, slot_drawer: 1.0})(q, cw, fh, Db, opening=opening)
+        dr = bin_t(q, cw, fh, Db, opening=opening)
         if tilt:
             link = mount_hinged(ctx.builder, root, dr, front_x=lo[0], center_yz=(cy, cz), size_yz=(cw, fh),
                                 side="-z", limits=(0.0, q.uniform("limit", 0.35, 0.55)), name="bin")

@@ -21,12 +21,11 @@ import math
 
 from artipg.geometry import cuboid_between
 from artipg.geometry.transforms import rot_x, translation
-from artipg.model.part import Part
 from artipg.rules import Category, Slot
 from artipg.templates.frames import glazed_panel, inset_leaf, sash_tracks, stop_ring, window_frame
 from artipg.templates.handles import arch_handle, edge_pull, flat_bar_handle
 from artipg.templates.mounting import free_edge_yz, mount_hinged, mount_sliding
-from artipg.templates.turn_handles import casement_handle, mount_turning
+from artipg.templates.turn_handles import casement_handle, mount_turning, replay
 
 # sub-category -> section (casement, awning) or window (sliding, hung) width, height,
 # sections or sashes (lo, hi), sash thickness
@@ -43,21 +42,21 @@ def frame(ctx):
     W, H, n, ts = p.uniform("width", *w), p.uniform("height", *h), p.integers("sections", *n), p.uniform(
         "sash_thickness", *t)
     root = ctx.builder.create_link("frame")
-    if ctx.sub in ("sliding", "double_hung"):
+    if ctx.sub in ("sliding", "double_hung"):  # the frame's profile includes the tracks
         tracks, depth, xs = sash_tracks(p.scope("tracks"), W, H, ts, vertical=ctx.sub == "double_hung")
-        root.add(window_frame(p.scope("frame"), W, H, depth=depth))
-        root.add(tracks)
+        fr = root.add(window_frame(p.scope("frame"), W, H, depth=depth))
+        fr.primitives += tracks.primitives
         return root, dict(W=W, H=H, n=2 if W < 1.5 else n, ts=ts, tracks=xs)
     mw = p.uniform("mullion", 0.04, 0.07)
     Wo = n * W + (n - 1) * mw
     fr = root.add(window_frame(p.scope("frame"), Wo, H, depth=ts + p.uniform("stop_room", 0.02, 0.05)))
     ys = [-Wo / 2 + W / 2 + i * (W + mw) for i in range(n)]
-    prims = [cuboid_between((0, y + W / 2, 0), (fr.anchor("depth")[0], y + W / 2 + mw, H)) for y in ys[:-1]]
-    if prims:
-        root.add(Part("frame", "mullion", prims))
+    # one frame part: the ring, the mullions and a stop bead lining each section
+    fr.primitives += [cuboid_between((0, y + W / 2, 0), (fr.anchor("depth")[0], y + W / 2 + mw, H), role="mullion")
+                      for y in ys[:-1]]
     band, sd = p.uniform("stop_band", 0.01, 0.015), p.uniform("stop_depth", 0.008, 0.015)
     for y in ys:
-        root.add(stop_ring(W, H, ts, sd, band, (y, H / 2)))
+        fr.primitives += stop_ring(W, H, ts, sd, band, (y, H / 2)).primitives
     return root, dict(W=W, H=H, n=n, ts=ts, ys=ys)
 
 
@@ -76,9 +75,13 @@ def sashes(ctx):
         return _sliding(ctx, root, d, c, sash, grid["rail"])
     if ctx.sub == "double_hung":
         return _hung(ctx, root, d, c, sash, grid["rail"])
-    lim = p.uniform("limit", 1.2, 1.7)
-    hinge = p.choice("awning_hinge", {"+z": 2.0, "-z": 1.0}) if ctx.sub == "awning" else None
+    if ctx.sub == "awning":  # top-hung, or bottom-hung (a hopper)
+        hinge, pull_t = p.choice("awning_hinge", {"+z": 2.0, "-z": 1.0}), ctx.choose("pull", PULLS)
+        lim = p.uniform("awning_limit", 0.3, 0.8) if hinge == "+z" else p.uniform("hopper_limit", 0.2, 0.4)
+    else:
+        hinge, lim = None, p.uniform("limit", 1.2, 1.7)
     fixed_mid = d["n"] == 3 and p.flag("fixed_middle", 0.6)
+    hq, built = p.scope("handle"), False  # one handle design for every sash: drawn once, then replayed
     for i, y in enumerate(d["ys"]):
         q = p.scope(f"sash{i}")
         if fixed_mid and i == 1:
@@ -89,22 +92,20 @@ def sashes(ctx):
         vertical, sgn = side[1] == "y", 1.0 if side[0] == "+" else -1.0
         (sw, sh), (dy, dz) = inset_leaf(W, H, side, ts, c)
         cy, cz = y + dy, H / 2 + dz
-        if not vertical:
-            lim = p.uniform("awning_limit", 0.3, 0.8) if side == "+z" else p.uniform("hopper_limit", 0.2, 0.4)
         frame_part, glass = sash(q, sw, sh)
         link = mount_hinged(ctx.builder, root, frame_part, front_x=ts, center_yz=(cy, cz), size_yz=(sw, sh),
                             side=side, limits=(0.0, lim), name="sash")
         link.add(glass, frame_part.pose)
         hy, hz = free_edge_yz(side, (sw, sh), grid["rail"] / 2)
         front = frame_part.pose @ translation(-ts, hy, hz)
+        hp, built = replay(hq) if built else hq, True
         if vertical:  # window handle: fixed base, lever pointing down, a quarter turn
-            base, lever = casement_handle(q.scope("handle"))
+            base, lever = casement_handle(hp)
             link.add(base, front)
             mount_turning(ctx.builder, link, lever, front @ translation(base.anchor("mount")[0], 0, 0),
                           (0.0, math.pi / 2), name="handle", axis=(sgn, 0.0, 0.0))  # towards the hinge
         else:
-            pull = ctx.choose("pull", PULLS)(q.scope("pull"), length=min(0.2, 0.4 * sw))
-            link.add(pull, front @ rot_x(math.pi / 2))
+            link.add(pull_t(hp, length=min(0.2, 0.4 * sw)), front @ rot_x(math.pi / 2))
 
 
 def _place(ctx, root, sash, origin, axis=None, travel=0.0):

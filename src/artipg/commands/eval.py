@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import math
+import zipfile
 from pathlib import Path
 from typing import List, Optional
 
@@ -130,6 +131,10 @@ def _clean(x):
 def _pair_categories(gen: dict, ref: dict) -> list[tuple[str, str, str]]:
     """(label, generated category, reference category) to compare."""
     shared = [c for c in gen if c in ref]
+    if not shared and len(gen) == 1 and len(ref) == 1:
+        (g,), (r,) = gen, ref
+        err_console.print(f"[yellow]note:[/] no shared category name; comparing {g!r} with {r!r}")
+        return [(f"{g} vs {r}", g, r)]
     for c in gen:
         if c not in ref:
             err_console.print(f"[yellow]note:[/] category {c!r} is only in the generated set; skipped")
@@ -138,10 +143,6 @@ def _pair_categories(gen: dict, ref: dict) -> list[tuple[str, str, str]]:
             err_console.print(f"[yellow]note:[/] category {c!r} is only in the reference set; skipped")
     if shared:
         return [(c, c, c) for c in shared]
-    if len(gen) == 1 and len(ref) == 1:
-        (g,), (r,) = gen, ref
-        err_console.print(f"[yellow]note:[/] no shared category name; comparing {g!r} with {r!r}")
-        return [(f"{g} vs {r}", g, r)]
     fail("the two sets share no category; use --category / --reference-category to pick the ones to compare")
     return []
 
@@ -185,7 +186,7 @@ def register(app: typer.Typer) -> None:
             if encoder is not None:
                 try:
                     enc = PointNetEncoder.load(encoder)
-                except (FileNotFoundError, ValueError, KeyError) as e:
+                except (OSError, ValueError, KeyError, zipfile.BadZipFile) as e:
                     fail(f"cannot load encoder {str(encoder)!r}: {e}")
             else:
                 enc = load_default_encoder()

@@ -456,6 +456,9 @@ def _arc_bounds(r_lo, r_hi, arc, z0, z1):
 
 def _arc_bounds_batch(r_lo, r_hi, arc, z0, z1):
     """Vectorised :func:`_arc_bounds` over rows; returns (M, 2, 3)."""
+    if (arc >= FULL - 1e-9).all():  # full turns (the common case): a square footprint
+        lo = np.column_stack([-r_hi, -r_hi, z0])
+        return np.stack([lo, np.column_stack([r_hi, r_hi, z1])], axis=1)
     arc = np.minimum(arc, FULL)
     cand = np.stack([np.zeros_like(arc), arc, np.full_like(arc, 0.5 * np.pi), np.full_like(arc, np.pi),
                      np.full_like(arc, 1.5 * np.pi)], axis=1)

@@ -53,16 +53,16 @@ def add_drawer(ctx, parent, q, *, front_x: float, outer, inner, depth: float, te
 
 def add_door(ctx, parent, q, *, front_x: float, outer, side: str, limits, template, handle=None,
              parent_pose=None, thickness: float | None = None, handle_length: float | None = None,
-             margin: float = 0.04, name: str = "door"):
+             margin: float = 0.04, name: str = "door", **door_kw):
     """A door covering ``outer``, hinged on ``side`` ("+y", "-y", "+z", "-z"); returns its link.
 
     The handle (a front-handle template or None) sits ``margin`` inside the free edge
     (at most half the rail width of framed fronts), vertical on side-hinged doors and
-    horizontal on top/bottom-hinged ones.
+    horizontal on top/bottom-hinged ones. ``door_kw`` go to the door template.
     """
     y0, y1, z0, z1 = outer
     size = (y1 - y0, z1 - z0)
-    door = template(q, size[0], size[1], thickness=thickness)
+    door = template(q, size[0], size[1], thickness=thickness, **door_kw)
     link = mount_hinged(ctx.builder, parent, door, front_x=front_x, center_yz=((y0 + y1) / 2, (z0 + z1) / 2),
                         size_yz=size, side=side, limits=limits, parent_pose=parent_pose, name=name)
     if handle is not None:

@@ -137,17 +137,20 @@ def glazed_panel(p, width: float, height: float, thickness: float | None = None,
     gw, gh = width - 2 * r, height - 2 * r
     prims = [rect_ring(height, width, t, gh, gw, translation(-t / 2, 0, 0) @ _RING_TO_X, role="panel")]
     bt = 0.6 * t
-    for i in range(1, nr):
-        prims.append(cuboid(bt, gw, bar, translation(-t / 2, 0, -gh / 2 + i * gh / nr), role="bar"))
+    for i in range(1, nr):  # glazing bars on the lites' edges
+        prims.append(cuboid(bt, gw, bar, translation(-t / 2, 0, -gh / 2 + i * (gh + bar) / nr - bar / 2), role="bar"))
     for j in range(1, nc):
-        prims.append(cuboid(bt, bar, gh, translation(-t / 2, -gw / 2 + j * gw / nc, 0), role="bar"))
+        prims.append(cuboid(bt, bar, gh, translation(-t / 2, -gw / 2 + j * (gw + bar) / nc - bar / 2, 0), role="bar"))
     anchors, regions = _front(t, width, height, "panel")
     anchors["stile"] = (-t, width / 2 - r / 2, 0.0)
     act = "hinge_door" if semantic == "door" else "none"
     frame = Part(semantic, "glazed_panel", prims, anchors=anchors, regions=regions, actionable=act)
     gt = min(0.3 * t, p.uniform("glass_thickness", 0.004, 0.02))
-    glass = Part("glass", "glazed_panel", [cuboid(gt, gw, gh, translation(-t / 2, 0, 0), role="glass")])
-    return frame, glass
+    # one pane per lite, between the bars (no glass hidden inside them)
+    lw, lh = (gw - (nc - 1) * bar) / nc, (gh - (nr - 1) * bar) / nr
+    panes = [cuboid(gt, lw, lh, translation(-t / 2, -gw / 2 + lw / 2 + j * (lw + bar), -gh / 2 + lh / 2 + i * (lh + bar)),
+                    role="glass") for i in range(nr) for j in range(nc)]
+    return frame, Part("glass", "glazed_panel", panes)
 
 
 def barn_hardware(p, width: float, thickness: float, span: tuple[float, float], drop: float):

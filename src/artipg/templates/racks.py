@@ -1,11 +1,11 @@
 """Racks, trays and bins inside appliances: refrigerator door bins, dishwasher wire
-racks and cutlery trays, spray arms, oven racks.
+racks and cutlery trays, spray arms, flat oven racks.
 
 Frames (metres):
 - ``door_bins``: in the front-panel frame of the door they hang on (origin at the
   centre of the door's back face, the cabinet behind it at x > 0); the bins fill the
   rectangle (y0, y1, z0, z1) of that frame and reach ``depth`` into the cabinet;
-- ``wire_rack`` and ``cutlery_tray``: origin at the centre of the rack's underside,
+- ``wire_rack``, ``cutlery_tray`` and ``oven_rack``: origin at the centre of the rack's underside,
   depth along x (front at -x), width along y, wires up to ``height``;
 - ``spray_arm``: origin on the rotation axis at the underside of its hub, axis +z.
 """
@@ -81,3 +81,14 @@ def spray_arm(p, radius: float, height: float) -> Part:
         prims.append(cuboid(2 * radius, w, 0.6 * height, rot_z(i * math.pi / 2) @ translation(0, 0, 0.7 * height),
                             role="arm"))
     return Part("arm", "spray_arm", prims, regions={"rotate": Region(("arm",))})
+
+
+def oven_rack(p, depth: float, width: float) -> Part:
+    """Flat oven shelf: a wire frame with 6-12 wires across, resting on side runners."""
+    r = p.uniform("wire", 0.0025, 0.004)
+    n = p.integers("wires", 6, 12)
+    D, W = depth / 2, width / 2
+    prims = [_wire_box(-D, D, -W, W, 0.0, 2 * r, 2 * r, "frame")]
+    prims += [cuboid(2 * r, width - 2 * r, 2 * r, translation(-D + depth * (i + 1) / (n + 1), 0, r), role="wire")
+              for i in range(n)]
+    return Part("tray", "oven_rack", prims, regions={"pull": Region(("frame",)), "grasp": Region(("frame",))})

@@ -50,17 +50,18 @@ def keypad_housing(p, field_w: float, field_h: float, depth: float, gap: float):
     Returns
     -------
     (Part, Part)
-        The frame (``panel``) and the display (``screen``), both in the mount frame.
+        The frame (``panel``, anchor ``corner``: its front top corner on +y) and the
+        display (``screen``, anchor ``top``), both in the mount frame.
     """
     band = p.uniform("band", 0.006, 0.012)
     d = depth
     iw, ih = field_w + 2 * gap, field_h + 2 * gap
     frame = Part("panel", "keypad_housing", [rect_ring(ih + 2 * band, iw + 2 * band, d, ih, iw,
                                                        translation(-d / 2, 0, 0) @ _RING_TO_X, role="frame")],
-                 anchors={"top": (0.0, 0.0, ih / 2 + band)})
+                 anchors={"corner": (-d, iw / 2 + band, ih / 2 + band)})
     dh = p.uniform("display_height", 0.015, 0.03)
     dd = p.uniform("display_depth", 0.004, 0.01)
     z0 = ih / 2 + band
     screen = Part("screen", "keypad_display", [cuboid(dd, iw + 2 * band, dh, translation(-dd / 2, 0, z0 + dh / 2),
-                                                      role="display")])
+                                                      role="display")], anchors={"top": (-dd, 0.0, z0 + dh)})
     return frame, screen

@@ -5,8 +5,9 @@ Frame convention (as in :mod:`artipg.templates.controls`): the surface is the pl
 x = 0 with outward normal **-x**, the origin is the turning axis on that surface, the
 handle protrudes along -x and +z is up. Every template's rotating hub is round and
 coaxial with the axis, so a handle link turns without touching its surface.
-Anchor ``tip`` is the end of the lever (its y sign is the side the lever points to);
-:func:`mount_turning` turns levers tip-down for positive joint values.
+Anchor ``tip`` is the end of the lever (its y sign is the side the lever points to),
+``reach`` = (r, 0, 0) the radius the handle sweeps about its axis; :func:`mount_turning`
+turns levers tip-down for positive joint values.
 """
 
 from __future__ import annotations
@@ -43,7 +44,9 @@ def _rose_and_neck(p, neck_r: float):
 
 
 def _lever(template, prims, x, side, L, grip_w) -> Part:
-    return Part("handle", template, prims, anchors={"tip": (x, side * L, 0.0), "front": (x, 0.0, 0.0)},
+    reach = float(np.hypot(L, grip_w / 2))
+    return Part("handle", template, prims, anchors={"tip": (x, side * L, 0.0), "front": (x, 0.0, 0.0),
+                                                    "reach": (reach, 0.0, 0.0)},
                 regions={"grasp": Region(("grip",)), "push": Region(("grip",)), "rotate": Region(("grip",))},
                 grasps=[_grasp(x, side * f * L, grip_w + 0.02) for f in (0.5, 0.8)], actionable="hinge_handle")
 
@@ -85,7 +88,8 @@ def ball_knob(p, side: float = 1.0) -> Part:
     R = p.uniform("knob_radius", 0.022, 0.03)
     prims, x = _rose_and_neck(p, p.uniform("neck_radius", 0.008, 0.012))
     prims.append(sphere(R, pose=translation(x - 0.8 * R, 0, 0), role="grip"))
-    return Part("handle", "ball_knob", prims, anchors={"tip": (x - 0.8 * R, 0.0, 0.0), "front": (x - 1.8 * R, 0, 0)},
+    return Part("handle", "ball_knob", prims, anchors={"tip": (x - 0.8 * R, 0.0, 0.0), "front": (x - 1.8 * R, 0, 0),
+                                                       "reach": (R, 0.0, 0.0)},
                 regions={"grasp": Region(("grip",)), "rotate": Region(("grip",))},
                 grasps=[_grasp(x - 0.8 * R, 0.0, 2 * R + 0.02)], actionable="hinge_knob")
 
@@ -97,7 +101,8 @@ def flared_knob(p, side: float = 1.0) -> Part:
     prims, x = _rose_and_neck(p, p.uniform("neck_radius", 0.008, 0.012))
     prims.append(frustum(0.5 * R, R, 0.7 * d, translation(x - 0.35 * d + 0.001, 0, 0) @ _X, role="grip"))
     prims.append(_disc(R, x - 0.7 * d, x - d, "grip"))
-    return Part("handle", "flared_knob", prims, anchors={"tip": (x - d, 0.0, 0.0), "front": (x - d, 0.0, 0.0)},
+    return Part("handle", "flared_knob", prims, anchors={"tip": (x - d, 0.0, 0.0), "front": (x - d, 0.0, 0.0),
+                                                         "reach": (R, 0.0, 0.0)},
                 regions={"grasp": Region(("grip",)), "rotate": Region(("grip",))},
                 grasps=[_grasp(x - 0.85 * d, 0.0, 2 * R + 0.02)], actionable="hinge_knob")
 
@@ -112,7 +117,7 @@ def thumb_turn(p, side: float = 1.0) -> Part:
     rt = p.uniform("rose_thickness", 0.005, 0.01)
     w, d = p.uniform("wing_length", 0.03, 0.045), p.uniform("wing_depth", 0.015, 0.022)
     prims = [_disc(R, 0.0, -rt, "rose"), cuboid(d, 0.008, w, translation(-rt - d / 2, 0, 0), role="grip")]
-    return Part("knob", "thumb_turn", prims, anchors={"tip": (-rt - d, 0.0, w / 2)},
+    return Part("knob", "thumb_turn", prims, anchors={"tip": (-rt - d, 0.0, w / 2), "reach": (R, 0.0, 0.0)},
                 regions={"rotate": Region(("grip",)), "grasp": Region(("grip",))},
                 grasps=[_grasp(-rt - d / 2, 0.0, 0.03)], actionable="hinge_knob")
 
@@ -135,9 +140,12 @@ def casement_handle(p, side: float = 1.0):
     L = p.uniform("lever_length", 0.09, 0.12)
     gt = p.uniform("grip_thickness", 0.012, 0.018)
     prims = [_disc(r, 0.0, -hd, "hub"), cuboid(gt, 0.016, L, translation(-hd + gt / 2, 0, -L / 2), role="grip")]
-    lever = Part("handle", "casement_handle", prims, anchors={"tip": (-hd, 0.0, -L)},
-                 regions={"grasp": Region(("grip",)), "rotate": Region(("grip",))},
-                 grasps=[_grasp(-hd + gt / 2, 0.0, 0.036)], actionable="hinge_handle")
+    # approach +x, jaws closing along y across the hanging grip
+    grasps = [Grasp(np.array([[0.0, 0.0, 1.0, -hd + gt / 2], [0.0, 1.0, 0.0, 0.0], [-1.0, 0.0, 0.0, -f * L],
+                              [0.0, 0.0, 0.0, 1.0]]), 0.036) for f in (0.55, 0.8)]
+    lever = Part("handle", "casement_handle", prims, anchors={"tip": (-hd, 0.0, -L), "reach": (L, 0.0, 0.0)},
+                 regions={"grasp": Region(("grip",)), "rotate": Region(("grip",))}, grasps=grasps,
+                 actionable="hinge_handle")
     return base, lever
 
 
@@ -151,7 +159,7 @@ def spoke_wheel(p, side: float = 1.0, radius: float | None = None) -> Part:
     ball = p.uniform("ball_radius", 1.3, 1.9) * r
     hub_d = max(p.uniform("hub_depth", 0.02, 0.035), 2 * ball + 0.006)  # the balls clear the surface
     x = -hub_d / 2
-    prims = [_disc(hub_r, 0.0, -hub_d, "hub")]
+    prims, grasps = [_disc(hub_r, 0.0, -hub_d, "hub")], []
     a0 = p.uniform("phase", 0.0, math.pi / n)
     for i in range(n):
         a = a0 + 2 * math.pi * i / n
@@ -159,9 +167,13 @@ def spoke_wheel(p, side: float = 1.0, radius: float | None = None) -> Part:
         R = np.array([[1.0, 0.0, 0.0, x], [0.0, c, -s, 0.0], [0.0, s, c, 0.0], [0.0, 0.0, 0.0, 1.0]])
         prims.append(cylinder(r, L, R @ translation(0, 0, L / 2), role="grip"))
         prims.append(sphere(ball, pose=R @ translation(0, 0, L), role="grip"))
-    return Part("handle", "spoke_wheel", prims, anchors={"tip": (x, 0.0, L), "front": (-hub_d, 0.0, 0.0)},
+        # pinch the ball from the front, jaws closing across its spoke
+        T = np.array([[0.0, 0.0, 1.0, x], [s, c, 0.0, -s * L], [-c, s, 0.0, c * L], [0.0, 0.0, 0.0, 1.0]])
+        grasps.append(Grasp(T, 2 * ball + 0.02))
+    return Part("handle", "spoke_wheel", prims, anchors={"tip": (x, 0.0, L), "front": (-hub_d, 0.0, 0.0),
+                                                         "reach": (L + ball, 0.0, 0.0)},
                 regions={"grasp": Region(("grip",)), "rotate": Region(("grip",))},
-                grasps=[_grasp(x, 0.0, 2 * ball + 0.02)], actionable="hinge_handle")
+                grasps=grasps, actionable="hinge_handle")
 
 
 def mount_turning(builder, parent, part, pose: np.ndarray, limits, name: str = "handle", axis=None):
@@ -176,3 +188,40 @@ def mount_turning(builder, parent, part, pose: np.ndarray, limits, name: str = "
     link.set_joint("revolute", pose, axis=axis or (-1.0 if tip_y > 0 else 1.0, 0.0, 0.0), limits=limits)
     link.add(part)
     return link
+
+
+class _Replay:
+    """Stand-in recorder returning the values already recorded under the same names,
+    so a template called again builds the same design (nothing is drawn or recorded)."""
+
+    def __init__(self, record: dict, prefix: str):
+        self.record, self.prefix = record, prefix
+
+    def _value(self, name, fixed):
+        return fixed if fixed is not None else self.record[f"{self.prefix}.{name}" if self.prefix else name].value
+
+    def scope(self, name: str) -> "_Replay":
+        return _Replay(self.record, f"{self.prefix}.{name}" if self.prefix else name)
+
+    def uniform(self, name, lo, hi, fixed=None):
+        return float(self._value(name, fixed))
+
+    def integers(self, name, lo, hi, fixed=None):
+        return int(self._value(name, fixed))
+
+    def flag(self, name, prob, fixed=None):
+        return bool(self._value(name, fixed))
+
+
+def replay(p) -> _Replay:
+    """A recorder that replays what ``p`` (a scoped recorder) has already drawn: pass it
+    to a template that was built with ``p`` to build the same design again."""
+    return _Replay(p.record, p.prefix)
+
+
+def matching(template, p, sides) -> list:
+    """One handle design built for each lever direction in ``sides`` (a set of door
+    hardware: the same lever on both faces and both leaves); parameters are drawn and
+    recorded once, by the first build."""
+    first = template(p, side=sides[0])
+    return [first] + [template(replay(p), side=s) for s in sides[1:]]

@@ -189,25 +189,6 @@ class Pieces:
         return cls(np.concatenate(links), np.concatenate(parts), np.concatenate(Ts), center, half, geom, params,
                    [p.name for p in obj.parts], obj.part_link, rng)
 
-    @classmethod
-    def of_meshes(cls, items, part_names, part_link, rng: np.random.Generator) -> "Pieces":
-        """Pieces from triangle meshes.
-
-        Parameters
-        ----------
-        items : list of (link index, part index, trimesh.Trimesh, (4, 4) pose in link frame)
-        part_names : list of str
-        part_link : (P,) int
-        rng : numpy.random.Generator
-            Stream for the surface samples.
-        """
-        M = len(items)
-        T = np.array([it[3] for it in items], dtype=float).reshape(M, 4, 4)
-        b = np.array([it[2].bounds for it in items], dtype=float).reshape(M, 2, 3)
-        meshes = {i: it[2] for i, it in enumerate(items)}
-        return cls([it[0] for it in items], [it[1] for it in items], T, 0.5 * (b[:, 0] + b[:, 1]),
-                   0.5 * (b[:, 1] - b[:, 0]), [None] * M, np.zeros((M, 1)), part_names, part_link, rng, meshes)
-
 
 def _mesh_sdf(mesh, x: np.ndarray) -> np.ndarray:
     """Signed distance to a triangle mesh (negative inside), metres; the sign comes

@@ -1,0 +1,180 @@
+"""Ovens: freestanding ranges, single and double wall ovens, countertop (toaster) ovens.
+
+Parts: an open-front carcass split by divider boards into one or two oven cavities
+(each with a flat wire rack on side runners) and, on ranges, a storage-drawer bay; a
+control strip above the doors (ranges and wall ovens) or a control bay beside the
+door (countertop ovens, on feet); ranges stand on a toe-kick plinth and carry a
+cooktop (gas burners under a grate, glass-ceramic or coil hobs), an optional
+backguard and, behind it, an optional hinged glass lid. Doors (glass window or solid)
+have a horizontal handle along the top.
+Joints: doors revolute about the horizontal axis (-y) on their bottom front edge,
+opening 83-90 degrees down; knobs continuous about their axis (one per burner plus
+1-2 oven knobs on ranges, 2-4 elsewhere); push buttons prismatic (wall ovens);
+storage drawer prismatic along -x; cooktop lid revolute about +y at its back edge.
+Sizes (metres): ranges 0.5-0.9 wide, 0.85-0.93 to the cooktop, 0.6-0.66 deep; wall
+ovens 0.56-0.6 wide, 0.58-0.6 tall (double: 0.88-1.05); countertop 0.4-0.55 wide,
+0.22-0.34 tall, 0.3-0.42 deep.
+"""
+
+from __future__ import annotations
+
+import math
+
+from artipg.geometry import cuboid_between
+from artipg.geometry.transforms import translation
+from artipg.model.part import Part, Region
+from artipg.rules import Category, Slot
+from artipg.templates.appliance import appliance_housing, control_panel, display
+from artipg.templates.bodies import carcass
+from artipg.templates.cells import add_door, add_drawer
+from artipg.templates.controls import BUTTONS, KNOBS, button_bezel, mount_button, mount_knob
+from artipg.templates.handles import arch_handle, edge_pull, flat_bar_handle
+from artipg.templates.panels import box_drawer, glass_door, slab_door
+from artipg.templates.racks import oven_rack
+from artipg.templates.stove import COOKTOPS
+from artipg.templates.supports import bun_feet, plinth
+
+SUBS = {  # width, height, depth ranges
+    "range": ((0.5, 0.9), (0.85, 0.93), (0.6, 0.66)),
+    "wall_oven": ((0.56, 0.6), (0.58, 0.6), (0.55, 0.57)),
+    "double_oven": ((0.56, 0.76), (0.88, 1.05), (0.55, 0.6)),
+    "countertop": ((0.4, 0.55), (0.22, 0.34), (0.3, 0.42)),
+}
+HANDLES = {flat_bar_handle: 2.0, arch_handle: 1.5, edge_pull: 1.0}  # bar_handle posts float (reported)
+DOORS = {glass_door: 3.0, slab_door: 1.0}
+
+
+def _rise(h, t):
+    """Gap a drop-down door of height h and thickness t needs above it (its top back corner rises)."""
+    return math.hypot(h, t) - h + 0.002
+
+
+def _rack(p, root, x0, x1, y0, y1, z):
+    """Flat oven rack resting on two side runners at height z."""
+    root.add(oven_rack(p, x1 - x0 - 0.03, y1 - y0 - 0.004), translation((x0 + x1) / 2 + 0.01, (y0 + y1) / 2, z))
+    root.add(Part("body", "runners", [cuboid_between((x0 + 0.02, y, z - 0.008), (x1, y + 0.01, z)) for y in (y0, y1 - 0.01)]))
+
+
+def body(ctx):
+    p = ctx.p
+    w, h, d = SUBS[ctx.sub]
+    W, H, D = p.uniform("width", *w), p.uniform("height", *h), p.uniform("depth", *d)
+    root = ctx.builder.create_link("base")
+    if ctx.sub == "countertop":
+        t, zf, bay, gap = p.uniform("door_thickness", 0.02, 0.03), p.uniform("feet", 0.01, 0.025), p.uniform("bay", 0.09, 0.14), 0.003
+        root.add(bun_feet(p.scope("feet"), 0.9 * D, 0.9 * W, zf))
+        hs = appliance_housing(p, D, W, H - zf, bay, "-y")
+        root.add(hs, translation(0, 0, (H + zf) / 2))
+        lo, hi = hs.anchor("cavity_lo"), hs.anchor("cavity_hi")
+        _rack(p.scope("rack0"), root, lo[0], hi[0], lo[1], hi[1], (H + zf) / 2 + 0.3 * (hi[2] - lo[2]) * p.uniform("rack_z", -1, 0))
+        y0 = -W / 2 + bay
+        cp = control_panel(p.scope("bay"), bay - gap, H - zf, p.uniform("panel_thickness", 0.008, 0.015))
+        pose = translation(-D / 2, y0 - bay / 2 - gap / 2, (H + zf) / 2)
+        root.add(cp, pose)
+        return root, W, D, t, [(y0 + gap, W / 2, zf, H)], None, ("column", pose @ translation(*cp.anchor("front")), bay - gap, H - zf, 0)
+    t = p.uniform("door_thickness", 0.04, 0.06)
+    zk = p.uniform("kick", 0.03, 0.08) if ctx.sub == "range" else 0.0
+    zb, n, ctx_lid = H, 0, None
+    if zk:
+        root.add(plinth(p.scope("plinth"), D, W, zk))
+    if ctx.sub == "range":
+        n = p.choice("burners", (5, 6)) if W > 0.75 else 4
+        cook = ctx.choose("cooktop", COOKTOPS)(p.scope("cooktop"), D, W, n)
+        zb = H - cook.anchor("surface")[2]
+        root.add(cook, translation(0, 0, zb))
+        if p.flag("backguard", 0.6):
+            bt, bh = p.uniform("backguard_depth", 0.02, 0.04), p.uniform("backguard_height", 0.06, 0.2)
+            root.add(Part("panel", "backguard", [cuboid_between((D / 2 - bt, -W / 2, H), (D / 2, W / 2, H + bh), role="panel")]))
+            ctx_lid = (D / 2 - bt, H + cook.anchor("top")[2] - cook.anchor("surface")[2] + 0.004, bh)
+    box = carcass(p, D, W, zb - zk)
+    root.add(box, translation(0, 0, (zb + zk) / 2))
+    wall = box.primitives[1].params[1]
+    cs, tc = p.uniform("strip", 0.07, 0.11), p.uniform("strip_thickness", 0.01, 0.02)
+    cp = control_panel(p.scope("strip"), W, cs, tc)
+    root.add(cp, translation(-D / 2, 0, zb - cs / 2))
+    top = zb - cs
+    drawer = None
+    if ctx.sub == "range" and p.flag("drawer", 0.6):
+        zd = zk + p.uniform("drawer_height", 0.1, 0.16)
+        drawer = (zk, zd - 0.003, zk + wall, zd - wall)
+        bottoms = [zd]
+    elif ctx.sub == "double_oven":
+        hl = (top - zk) * p.uniform("split", 0.48, 0.55)
+        bottoms = [zk, zk + hl + _rise(hl, t)]
+    else:
+        bottoms = [zk]
+    doors, x0, x1 = [], -D / 2, D / 2 - box.primitives[0].params[0]
+    for i, b in enumerate(bottoms):
+        z1 = (bottoms[i + 1] if i + 1 < len(bottoms) else top)
+        z1 -= _rise(z1 - b, t)
+        doors.append((-W / 2 + 0.002, W / 2 - 0.002, b, z1))
+        root.add(Part("body", "divider", [cuboid_between((x0, -W / 2 + wall, z1 - wall / 2), (x1, W / 2 - wall, z1))]))
+        if b > zk:
+            root.add(Part("body", "divider", [cuboid_between((x0, -W / 2 + wall, b - wall), (x1, W / 2 - wall, b))]))
+        _rack(p.scope(f"rack{i}"), root, x0, x1, -W / 2 + wall, W / 2 - wall, b + (z1 - b) * p.uniform(f"rack_z{i}", 0.3, 0.55))
+    return root, W, D, t, doors, drawer, ("row", translation(-D / 2 - tc, 0, zb - cs / 2), W, cs, n), ctx_lid
+
+
+def fronts(ctx):
+    root, W, D, t, doors, drawer, panel, *lid = ctx.out["body"]
+    p = ctx.p
+    tmpl, handle = ctx.choose("door", DOORS), ctx.choose("handle", HANDLES)
+    m = p.uniform("handle_margin", 0.03, 0.05)
+    for i, outer in enumerate(doors):
+        add_door(ctx, root, p.scope(f"door{i}"), front_x=-D / 2, outer=outer, side="-z", limits=(0.0, p.uniform(f"limit{i}", 1.45, 1.57)),
+                 template=tmpl, handle=handle, thickness=t, handle_length=min(0.6, 0.7 * (outer[1] - outer[0])), margin=m)
+    if drawer is not None:  # the drawer's handle must stay short of the opened door's handle
+        h = doors[0][3] - doors[0][2]
+        f = min(0.8, (t + h - m - 0.12) / (D - 0.1))
+        add_drawer(ctx, root, p.scope("drawer"), front_x=-D / 2, outer=(-W / 2 + 0.002, W / 2 - 0.002, *drawer[:2]),
+                   inner=(-W / 2 + 0.03, W / 2 - 0.03, *drawer[2:]), depth=D - 0.1, template=box_drawer, handle=handle,
+                   travel=(0.6 * f, f), handle_z=0.2)
+    _controls(ctx, root, panel)
+    if lid and lid[0] is not None and p.flag("lid", 0.4):
+        xb, zl, _ = lid[0]
+        tl = p.uniform("lid_thickness", 0.006, 0.01)
+        link = ctx.builder.create_link("lid", root)
+        link.set_joint("revolute", translation(xb, 0, zl + tl), axis=(0, 1, 0), limits=(0.0, p.uniform("lid_limit", 1.3, 1.5)))
+        link.add(Part("lid", "glass_lid", [cuboid_between((-(xb + D / 2 - 0.005), -W / 2 + 0.005, -tl), (0.0, W / 2 - 0.005, 0.0), role="glass")],
+                      regions={"lift": Region(("glass",))}, actionable="hinge_lid"))
+
+
+def _controls(ctx, root, panel):
+    """Knobs (on wall ovens also push buttons and a display) on the control strip or bay."""
+    kind, pose, w, h, burners = panel
+    p = ctx.p.scope("controls")
+    if kind == "column":  # countertop: knobs stacked in the bay
+        n = p.integers("knobs", 2, 4)
+        r = min(0.022, w / 2 - 0.01, h / n / 2 - 0.006)
+        spots = [(0.0, h / 2 - h * (i + 0.5) / n) for i in range(n)]
+    elif burners:  # ranges: one knob per burner and one or two for the oven, evenly spread
+        n = burners + p.integers("oven_knobs", 1, 2)
+        r = min(0.026, h / 2 - 0.01, (w - 0.1) / (2 * n) - 0.006)
+        spots = [(-w / 2 + 0.05 + (w - 0.1) * (i + 0.5) / n, 0.0) for i in range(n)]
+    else:  # wall ovens: knobs at both ends
+        n = p.integers("knobs", 2, 3)
+        r = min(0.026, h / 2 - 0.01)
+        pitch = 2 * r + 0.025
+        spots = [(s * (w / 2 - 0.05 - r - (i // 2) * pitch), 0.0) for i, s in zip(range(n), (-1, 1, -1))]
+    knob = ctx.choose("knob", KNOBS)
+    for i, (y, z) in enumerate(spots):
+        mount_knob(ctx.builder, root, knob(p.scope(f"knob{i}"), radius=r), pose @ translation(0, y, z), continuous=True)
+    if kind == "column" or burners:
+        return
+    lo, hi = -w / 2 + 0.05 + (2 * r + 0.025) * (1 + (n > 2)) + 0.02, w / 2 - 0.05 - 2 * r - 0.045
+    if p.flag("display", 0.7):
+        root.add(display(p.scope("display"), 0.3 * (hi - lo), 0.5 * h), pose @ translation(0, (lo + hi) / 2, h / 5))
+    tmpl, k = ctx.choose("button", BUTTONS), p.integers("buttons", 2, max(2, min(5, int((hi - lo) / 0.034))))
+    for i in range(k):
+        q = p.scope(f"button{i}")
+        b = tmpl(q, radius=0.007) if tmpl.__name__ == "round_button" else tmpl(q, width=0.016, height=0.011)
+        T = pose @ translation(0, lo + (hi - lo) * (i + 0.5) / k, -h / 4)
+        root.add(button_bezel(q.scope("bezel"), b), T)
+        mount_button(ctx.builder, root, b, T)
+
+
+RULE = Category(
+    name="oven",
+    subcategories={"range": 3.0, "wall_oven": 2.0, "double_oven": 1.0, "countertop": 1.0},
+    slots=(Slot("body", body), Slot("fronts", fronts, after=("body",))),
+)
