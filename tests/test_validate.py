@@ -27,8 +27,8 @@ import pytest
 
 import artipg
 from artipg.export.folder import export_object
-from artipg.geometry import Primitive, cuboid, cylinder, frustum, prism, rect_ring, ring, sphere, torus, tri_prism
-from artipg.geometry.transforms import rot_y, rotation, translation
+from artipg.geometry import Primitive, cuboid, cylinder, frustum, prism, ring, sphere, torus, tri_prism
+from artipg.geometry.transforms import rotation, translation
 from artipg.model.part import Part
 from artipg.rules import Category, Slot
 from artipg.templates.bodies import carcass, cylindrical_shell

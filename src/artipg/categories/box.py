@@ -44,7 +44,8 @@ def body(ctx):
     p = ctx.p
     d, w, h, t = SIZES[ctx.sub]
     W = p.uniform("width", *w)
-    D, H, t = min(0.4, p.uniform("depth_ratio", *d) * W), p.uniform("height", *h), p.uniform("wall", *t)
+    D = min(0.55 if ctx.sub == "chest" else 0.4, p.uniform("depth_ratio", *d) * W)
+    H, t = p.uniform("height", *h), p.uniform("wall", *t)
     root = ctx.builder.create_link("body")
     z0 = 0.0
     if ctx.sub == "chest" and p.flag("has_support", 0.7):
@@ -117,10 +118,11 @@ def extras(ctx):
         link, lid = ctx.out["lids"]
         cw, ch = p.uniform("clasp_width", 0.012, 0.03), p.uniform("clasp_drop", 0.01, 0.025)
         x = lid.anchor("front")[0]  # a plate on the lid's front face hanging over the body
-        link.add(Part("handle", "clasp", [cuboid_between((x - 0.003, -cw / 2, -ch), (x, cw / 2, 0.8 * lid.anchor("top")[2]),
-                                                         role="grip")], regions={"lift": Region(("grip",))}))
+        plate = cuboid_between((x - 0.003, -cw / 2, -ch), (x, cw / 2, 0.8 * lid.anchor("top")[2]), role="grip")
+        link.add(Part("handle", "clasp", [plate], regions={"lift": Region(("grip",))}))
     if ctx.sub == "chest" and p.flag("side_handles", 0.6):
-        tmpl, hl = ctx.choose("side_handle", {arch_handle: 1.0, flat_bar_handle: 1.0}), p.uniform("side_handle_length", 0.1, 0.16)
+        tmpl = ctx.choose("side_handle", {arch_handle: 1.0, flat_bar_handle: 1.0})
+        hl = p.uniform("side_handle_length", 0.1, 0.16)
         for i, s in enumerate((1.0, -1.0)):
             pose = translation(0, s * W / 2, top - 0.12) @ rot_z(-s * math.pi / 2) @ rot_x(math.pi / 2)
             root.add(tmpl(p.scope(f"side_handle{i}"), length=hl), pose)

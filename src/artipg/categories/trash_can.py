@@ -24,8 +24,8 @@ from artipg.geometry import cuboid_between
 from artipg.geometry.transforms import rot_y, translation
 from artipg.model.part import Part
 from artipg.rules import Category, Slot
-from artipg.templates.bins import (ROUND_LIDS, flat_disc_lid, pedal, pedal_brackets, rect_collar, round_collar, swing_flap,
-                                  swing_hood)
+from artipg.templates.bins import (ROUND_LIDS, flat_disc_lid, pedal, pedal_brackets, rect_collar, round_collar,
+                                  swing_flap, swing_hood)
 from artipg.templates.bodies import carcass, cylindrical_shell, tapered_shell
 from artipg.templates.boxes import mount_lid, open_box, raised_lid, slab_lid
 from artipg.templates.controls import button_bezel, mount_button, rect_button, round_button
@@ -68,8 +68,8 @@ def top(ctx):
         if b["round"]:
             lid, ax = ctx.choose("lid", ROUND_LIDS)(p.scope("lid"), b["R"] + o), b["R"] + o
         else:
-            lid, ax = ctx.choose("lid", {slab_lid: 1.0, raised_lid: 1.0})(p.scope("lid"), b["D"] + o, b["W"] + 2 * o), b[
-                "D"] / 2
+            tmpl = ctx.choose("lid", {slab_lid: 1.0, raised_lid: 1.0})
+            lid, ax = tmpl(p.scope("lid"), b["D"] + o, b["W"] + 2 * o), b["D"] / 2
         mount_lid(ctx.builder, root, lid, (ax, 0.0, H), "+x", (0.0, p.uniform("lid_limit", 1.1, 1.45)))
         bh = p.uniform("hinge_block", 0.02, 0.04)  # below the axis: the lid never reaches it below 90 degrees
         root.add(Part("hinge", "hinge_block", [cuboid_between((ax - 0.02, -0.03, H - bh), (ax, 0.03, H))]))

@@ -170,10 +170,10 @@ def _controls(ctx, root, pose, w, h, twin):
     if twin:
         return
     lo, hi = -w / 2 + 0.03, w / 2 - 0.08 - 2 * r
-    if p.flag("display", 0.6):
+    if hi - lo > 0.15 and p.flag("display", 0.6):
         root.add(Part("screen", "display", [cuboid_between((-0.002, hi - 0.3 * (hi - lo), -h / 4), (0.0, hi, h / 4), role="screen")]), pose)
         hi -= 0.3 * (hi - lo) + 0.02
-    tmpl, k = ctx.choose("button", BUTTONS), p.integers("buttons", 2, max(2, min(5, int((hi - lo) / 0.036))))
+    tmpl, k = ctx.choose("button", BUTTONS), p.integers("buttons", 1, max(1, min(5, int((hi - lo) / 0.036))))
     for i in range(k):
         q = p.scope(f"button{i}")
         b = tmpl(q, radius=0.008) if tmpl.__name__ == "round_button" else tmpl(q, width=0.018, height=0.012)

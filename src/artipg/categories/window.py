@@ -135,7 +135,8 @@ def _sliding(ctx, root, d, c, sash, rail):
         wc = Wo / 2 + 2 * ov
         ws = (Wo - wc) / 2 + ov - c
         travel = (Wo - 2 * c - 2 * ws) / 2 - 0.002
-        specs = [(xb, 0.0, 0.0, 0.0), (xa, -(Wo / 2 - c - ws / 2), 1.0, travel), (xa, Wo / 2 - c - ws / 2, -1.0, travel)]
+        y = Wo / 2 - c - ws / 2
+        specs = [(xb, 0.0, 0.0, 0.0), (xa, -y, 1.0, travel), (xa, y, -1.0, travel)]
     pull = ctx.choose("pull", PULLS)
     for i, (x, y, s, travel) in enumerate(specs):
         w = wc if n == 3 and i == 0 else ws

@@ -122,9 +122,8 @@ def rect_collar(p, depth: float, width: float, opening_depth: float, opening_wid
     h = p.uniform("height", 0.02, 0.04, fixed=height)
     D, W, od, ow = depth / 2, width / 2, opening_depth / 2, opening_width / 2
     x0, x1 = front - od, front + od
-    prims = [cuboid_between((-D, -W, 0), (x0, W, h), role="collar"), cuboid_between((x1, -W, 0), (D, W, h), role="collar"),
-             cuboid_between((x0, -W, 0), (x1, -ow, h), role="collar"), cuboid_between((x0, ow, 0), (x1, W, h),
-                                                                                      role="collar")]
+    prims = [cuboid_between(lo, hi, role="collar") for lo, hi in (((-D, -W, 0), (x0, W, h)), ((x1, -W, 0), (D, W, h)),
+                                                                 ((x0, -W, 0), (x1, -ow, h)), ((x0, ow, 0), (x1, W, h)))]
     return Part("body", "rect_collar", prims, anchors={"opening": (od, ow, h), "button": ((x0 - D) / 2, 0.0, h)})
 
 

@@ -14,7 +14,7 @@ import math
 
 import numpy as np
 
-from artipg.geometry import cuboid, cuboid_between, rect_ring, tri_prism
+from artipg.geometry import cuboid_between, rect_ring, tri_prism
 from artipg.geometry.transforms import rot_x, rot_z, translation
 from artipg.model.part import Part, Region
 

@@ -148,7 +148,7 @@ def glazed_panel(p, width: float, height: float, thickness: float | None = None,
     gt = min(0.3 * t, p.uniform("glass_thickness", 0.004, 0.02))
     # one pane per lite, between the bars (no glass hidden inside them)
     lw, lh = (gw - (nc - 1) * bar) / nc, (gh - (nr - 1) * bar) / nr
-    panes = [cuboid(gt, lw, lh, translation(-t / 2, -gw / 2 + lw / 2 + j * (lw + bar), -gh / 2 + lh / 2 + i * (lh + bar)),
+    panes = [cuboid(gt, lw, lh, translation(-t / 2, (lw - gw) / 2 + j * (lw + bar), (lh - gh) / 2 + i * (lh + bar)),
                     role="glass") for i in range(nr) for j in range(nc)]
     return frame, Part("glass", "glazed_panel", panes)
 

@@ -1,7 +1,7 @@
 """The geometric checks: penetration at rest, floating links and parts, joint sweeps.
 
-All three share one batched distance pass (:func:`artipg.validate.contacts.evaluate`)
-over three kinds of scenes:
+All three share one batched distance pass
+(:func:`artipg.validate.contacts.pair_distance`) over three kinds of scenes:
 
 - *rest*: every pair of pieces of different parts whose boxes come within the
   floating tolerance; gives penetration depths between links (parent-child pairs
@@ -12,8 +12,9 @@ over three kinds of scenes:
   turn), for objects with several movable joints (two doors of one cabinet, a
   drawer under a lid); only pairs of links whose relative pose changed are tested.
 
-Penetration depth is minus the lowest signed distance of one piece's surface samples
-to another piece (both directions); a gap is the lowest positive one.
+A pair's penetration depth is the exact minimum translation that separates two boxes,
+otherwise minus the lowest signed distance of either piece's surface samples to the
+other; a gap is the (exact, for boxes) distance between them.
 """
 
 from __future__ import annotations

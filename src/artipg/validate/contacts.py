@@ -19,9 +19,10 @@ from __future__ import annotations
 import numpy as np
 
 from artipg.validate.kinematics import rigid_inverse
-from artipg.validate.shapes import Pieces, _BOX_FEATURES, _cuboid_rows
+from artipg.validate.rowsdf import cuboid_rows
+from artipg.validate.shapes import Pieces
 
-_CORNERS = _BOX_FEATURES[:8]
+_CORNERS = np.array([[a, b, c] for a in (-0.5, 0.5) for b in (-0.5, 0.5) for c in (-0.5, 0.5)])
 # the 12 edges of the unit box as (start corner, end corner) indices into _CORNERS
 _EDGES = np.array([(i, j) for i in range(8) for j in range(i + 1, 8)
                    if np.count_nonzero(_CORNERS[i] != _CORNERS[j]) == 1])
@@ -128,8 +129,8 @@ def box_distance(ha, hb, Wa, Wb, edge_margin=None) -> np.ndarray:
     va_b = np.einsum("kij,kvj->kvi", rel_ab[:, :3, :3], va) + rel_ab[:, None, :3, 3]
     vb_a = np.einsum("kij,kvj->kvi", rel_ba[:, :3, :3], vb) + rel_ba[:, None, :3, 3]
     K = len(ha)
-    d1 = _cuboid_rows(np.repeat(2 * hb, 8, axis=0), va_b.reshape(-1, 3)).reshape(K, 8).min(axis=1)
-    d2 = _cuboid_rows(np.repeat(2 * ha, 8, axis=0), vb_a.reshape(-1, 3)).reshape(K, 8).min(axis=1)
+    d1 = cuboid_rows(np.repeat(2 * hb, 8, axis=0), va_b.reshape(-1, 3)).reshape(K, 8).min(axis=1)
+    d2 = cuboid_rows(np.repeat(2 * ha, 8, axis=0), vb_a.reshape(-1, 3)).reshape(K, 8).min(axis=1)
     out = np.minimum(d1, d2)
     if edge_margin is not None:  # edges matter only where the vertex bound is not yet enough
         need = np.flatnonzero(out > edge_margin)

@@ -18,7 +18,7 @@ from __future__ import annotations
 import numpy as np
 
 from artipg.geometry.box import Cuboid, RectRing
-from artipg.validate.rowsdf import ROW_SDF, cuboid_rows
+from artipg.validate.rowsdf import ROW_SDF
 
 #: Surface samples per square metre, and the per-component minimum / maximum.
 DENSITY = 2000.0
@@ -26,7 +26,6 @@ MIN_PER_COMPONENT = 4
 MAX_PER_COMPONENT = 64
 
 
-_cuboid_rows = cuboid_rows
 
 
 class Pieces:
@@ -244,7 +243,7 @@ def _rect_ring_boxes(P: np.ndarray):
 
 
 def _box_features() -> np.ndarray:
-    """Corners and 3 points on each edge of the unit box centred at 0, (44, 3)."""
+    """Corners and the midpoint of each edge of the unit box centred at 0, (20, 3)."""
     s = np.array([-0.5, 0.5])
     corners = np.array([[a, b, c] for a in s for b in s for c in s])
     edges = []
@@ -252,7 +251,7 @@ def _box_features() -> np.ndarray:
         o = [k for k in range(3) if k != ax]
         for a in s:
             for b in s:
-                for t in (-0.25, 0.0, 0.25):
+                for t in (0.0,):
                     v = np.zeros(3)
                     v[ax], v[o[0]], v[o[1]] = t, a, b
                     edges.append(v)

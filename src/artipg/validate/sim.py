@@ -18,11 +18,12 @@ For each engine (short simulations, a few hundred milliseconds per object):
   engines' default contact filters apply here;
 - **drive**: with the root fixed, contacts frictionless and gravity off (so that only
   geometry can block a joint, not friction between touching parts or a servo too
-  weak to lift a lid), position control drives
-  all movable joints to their upper limits, then to their lower limits (continuous
-  joints: +-π/2); each must get within ``joint_tol`` of its target. Joints that do
-  not are driven again alone to tell a blocked joint from one that only interferes
-  with another.
+  weak to lift a lid), position control drives all movable joints from rest to their
+  upper limits and then back to their lower limits (continuous joints: +-π/2); each
+  must get within ``joint_tol`` of its target. A joint that is still closing in on
+  its target gets more time (up to three times ``drive_seconds``); one that stalls is
+  blocked. Joints that miss are driven again alone (the others held at rest) to tell
+  a blocked joint from one that only interferes with another.
 """
 
 from __future__ import annotations
@@ -61,7 +62,8 @@ class SimOptions:
     drift_tol : float
         Largest accepted displacement on the floor, metres.
     drive_seconds : float
-        Longest simulated time per drive phase (all joints to upper, then lower).
+        Simulated time per drive phase (all joints to upper, then to lower limits);
+        joints still closing in on their targets get up to twice as much again.
     joint_tol : float
         Accepted joint error as a fraction of the joint's range (at least 0.01 rad
         or 2 mm).
@@ -126,9 +128,12 @@ class _Joint:
             return (-0.5 * math.pi, 0.5 * math.pi)
         return (self.lo, self.hi)
 
-    def tol(self, frac: float) -> float:
+    def span(self) -> float:
         lo, hi = self.targets()
-        return max(frac * (hi - lo), 0.002 if self.type == "prismatic" else 0.01)
+        return hi - lo
+
+    def tol(self, frac: float) -> float:
+        return max(frac * self.span(), 0.002 if self.type == "prismatic" else 0.01)
 
 
 def _urdf_joints(urdf: Path) -> list[_Joint]:
@@ -197,7 +202,6 @@ def _pybullet_run(pb, cid, urdf, joints, opts):
     issues, info = [], {}
     flags = pb.URDF_USE_SELF_COLLISION | pb.URDF_USE_SELF_COLLISION_INCLUDE_PARENT
     dt = 1.0 / 240.0
-    pb.setGravity(0, 0, -9.81, physicsClientId=cid)
     pb.setTimeStep(dt, physicsClientId=cid)
     # leave the margin overlap of touching meshes alone instead of pushing them apart
     pb.setPhysicsEngineParameter(contactSlop=2 * PYBULLET_MESH_MARGIN + 5e-4, physicsClientId=cid)
@@ -219,24 +223,41 @@ def _pybullet_run(pb, cid, urdf, joints, opts):
                 issues.append(Issue("simulator", "sim_rest_penetration", -d, [names[a], names[b]],
                                     detail="pybullet: collision geometry penetrates at rest"))
     info["rest_penetration"] = worst
-    mov = [index[j.name] for j in joints if j.name in index]
-    # drive: all joints to their upper then lower targets, root fixed, frictionless,
-    # no gravity (only geometry may stop a joint)
+    pb.removeBody(body, physicsClientId=cid)
+    # drive: all joints to their upper then back to their lower targets, root fixed,
+    # frictionless, no gravity (only geometry may stop a joint); fresh body per run
     pb.setGravity(0, 0, 0, physicsClientId=cid)
-    for i in range(-1, n):
-        pb.changeDynamics(body, i, lateralFriction=0.0, spinningFriction=0.0, rollingFriction=0.0,
-                          physicsClientId=cid)
-    bad = _pb_drive(pb, cid, body, joints, index, opts, dt, [j.targets()[1] for j in joints])
-    bad += _pb_drive(pb, cid, body, joints, index, opts, dt, [j.targets()[0] for j in joints])
-    for j, target, reached in bad:
+
+    def run(sel):
+        b = pb.loadURDF(str(urdf), useFixedBase=True, flags=flags, physicsClientId=cid)
+        for i in range(-1, n):
+            pb.changeDynamics(b, i, lateralFriction=0.0, spinningFriction=0.0, rollingFriction=0.0,
+                              physicsClientId=cid)
+        live = [j for j in joints if j.name in index]
+        ids = [index[j.name] for j in live]
+        state = lambda j: pb.getJointState(b, index[j.name], physicsClientId=cid)[0]  # noqa: E731
+
+        def drive(goal):
+            pb.setJointMotorControlArray(b, ids, pb.POSITION_CONTROL,
+                                         targetPositions=[goal.get(j.name, 0.0) for j in live],
+                                         forces=[200.0] * len(ids), physicsClientId=cid)
+            return _run_until(lambda: pb.stepSimulation(physicsClientId=cid), dt, opts,
+                              [(j, goal[j.name]) for j in sel], state)
+
+        up = drive({j.name: j.targets()[1] for j in sel})
+        down = drive({j.name: j.targets()[0] for j in sel})
+        pb.removeBody(b, physicsClientId=cid)
+        return up + down
+
+    for j, target, reached in _blocked(run, [j for j in joints if j.name in index], opts):
         issues.append(Issue("simulator", "joint_blocked", abs(reached - target), joint=j.name, q=reached,
                             detail=f"pybullet: target {target:.4g} not reached"))
-    pb.removeBody(body, physicsClientId=cid)
     pb.setGravity(0, 0, -9.81, physicsClientId=cid)
     # drop on a floor, joints held at rest (the joints' own contacts were checked above)
     plane = pb.createCollisionShape(pb.GEOM_PLANE, physicsClientId=cid)
     pb.createMultiBody(0, plane, physicsClientId=cid)
     body = pb.loadURDF(str(urdf), useFixedBase=False, physicsClientId=cid)
+    mov = [index[j.name] for j in joints if j.name in index]
     if mov:
         pb.setJointMotorControlArray(body, mov, pb.POSITION_CONTROL, targetPositions=[0.0] * len(mov),
                                      forces=[200.0] * len(mov), physicsClientId=cid)
@@ -254,36 +275,45 @@ def _pybullet_run(pb, cid, urdf, joints, opts):
     return issues, info
 
 
-def _pb_drive(pb, cid, body, joints, index, opts, dt, targets):
-    """Drive the joints to ``targets`` from rest; returns [(joint, target, reached)] of
-    the joints that miss, also when driven alone."""
-    live = [(j, t) for j, t in zip(joints, targets) if j.name in index]
-    if not live:
+def _run_until(step, dt, opts, targets, state):
+    """Step until every (joint, target) is within tolerance, for ``drive_seconds``, then
+    on in quarter-second chunks (up to three times as long) while a joint that has not
+    arrived still closes on its target by more than 2 % of its range per chunk.
+
+    Returns [(joint, target, reached)] for every joint in ``targets``.
+    """
+    def missing():
+        return [(j, t) for j, t in targets if abs(state(j) - t) > j.tol(opts.joint_tol)]
+
+    check = max(1, int(round(0.1 / dt)))
+    for k in range(int(round(opts.drive_seconds / dt))):
+        step()
+        if k % check == check - 1 and not missing():
+            break
+    chunk = int(round(0.25 / dt))
+    extra = int(round(2 * opts.drive_seconds / 0.25))
+    for _ in range(extra):
+        todo = missing()
+        if not todo:
+            break
+        before = {j.name: abs(state(j) - t) for j, t in todo}
+        for _ in range(chunk):
+            step()
+        if all(before[j.name] - abs(state(j) - t) < 0.02 * j.span() for j, t in todo):
+            break  # stalled: blocked, not slow
+    return [(j, t, float(state(j))) for j, t in targets]
+
+
+def _blocked(run, joints, opts):
+    """Joints that miss a target when all are driven together and again when driven
+    alone (the others held at rest): [(joint, target, reached)]."""
+    if not joints:
         return []
-    ids = [index[j.name] for j, _ in live]
-
-    def run(sel):
-        for i in ids:
-            pb.resetJointState(body, i, 0.0, physicsClientId=cid)
-        goal = {j.name: t for j, t in sel}
-        pb.setJointMotorControlArray(body, ids, pb.POSITION_CONTROL,
-                                     targetPositions=[goal.get(j.name, 0.0) for j, _ in live],
-                                     forces=[200.0] * len(ids), physicsClientId=cid)
-        for k in range(int(round(opts.drive_seconds / dt))):
-            pb.stepSimulation(physicsClientId=cid)
-            if k % 24 == 23 and all(abs(pb.getJointState(body, index[j.name], physicsClientId=cid)[0] - t)
-                                    <= j.tol(opts.joint_tol) for j, t in sel):
-                break
-        return [(j, t, pb.getJointState(body, index[j.name], physicsClientId=cid)[0]) for j, t in sel]
-
-    failed = [(j, t) for j, t, q in run(live) if abs(q - t) > j.tol(opts.joint_tol)]
+    failed = {j.name for j, t, q in run(joints) if abs(q - t) > j.tol(opts.joint_tol)}
     out = []
-    for j, t in failed:
-        (_, _, q), = run([(j, t)])
-        if abs(q - t) > j.tol(opts.joint_tol):
-            out.append((j, t, q))
-    for i in ids:
-        pb.resetJointState(body, i, 0.0, physicsClientId=cid)
+    for j in joints:
+        if j.name in failed:
+            out += [(jj, t, q) for jj, t, q in run([j]) if abs(q - t) > jj.tol(opts.joint_tol)]
     return out
 
 
@@ -373,11 +403,22 @@ def _mujoco_run(mujoco, path, joints, opts):
     qadr = {j.name: m.jnt_qposadr[mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_JOINT, j.name)] for j in joints
             if j.name in act}
     live = [j for j in joints if j.name in act]
-    for phase in (1, 0):
-        bad = _mj_drive(mujoco, m, d, live, act, qadr, opts, [j.targets()[phase] for j in live])
-        for j, target, reached in bad:
-            issues.append(Issue("simulator", "joint_blocked", abs(reached - target), joint=j.name, q=reached,
-                                detail=f"mujoco: target {target:.4g} not reached"))
+    state = lambda j: d.qpos[qadr[j.name]]  # noqa: E731
+
+    def run(sel):
+        mujoco.mj_resetData(m, d)
+        d.ctrl[:] = 0.0
+        out = []
+        for phase in (1, 0):  # to the upper targets, then back to the lower ones
+            for j in sel:
+                d.ctrl[act[j.name]] = j.targets()[phase]
+            out += _run_until(lambda: mujoco.mj_step(m, d), m.opt.timestep, opts,
+                              [(j, j.targets()[phase]) for j in sel], state)
+        return out
+
+    for j, target, reached in _blocked(run, live, opts):
+        issues.append(Issue("simulator", "joint_blocked", abs(reached - target), joint=j.name, q=reached,
+                            detail=f"mujoco: target {target:.4g} not reached"))
     # drop on a floor with a free root, joints held at rest
     m, d = _mj_model(mujoco, path, joints, free=True, parent_contacts=False)
     d.ctrl[:] = 0.0
@@ -409,30 +450,3 @@ def _mj_body_box(m, d, b):
     c = d.geom_xpos[g]
     r = m.geom_rbound[g][:, None]
     return (c - r).min(axis=0), (c + r).max(axis=0)
-
-
-def _mj_drive(mujoco, m, d, joints, act, qadr, opts, targets):
-    """Drive ``joints`` to ``targets`` from rest; returns [(joint, target, reached)] failures."""
-    def run(sel):
-        mujoco.mj_resetData(m, d)
-        d.ctrl[:] = 0.0
-        for j, t in sel:
-            d.ctrl[act[j.name]] = t
-        steps = int(round(opts.drive_seconds / m.opt.timestep))
-        for k in range(steps):
-            mujoco.mj_step(m, d)
-            if k % 50 == 49 and all(abs(d.qpos[qadr[j.name]] - t) <= j.tol(opts.joint_tol) for j, t in sel):
-                break
-        return [(j, t, float(d.qpos[qadr[j.name]])) for j, t in sel]
-
-    pairs = list(zip(joints, targets))
-    if not pairs:
-        return []
-    failed = [(j, t) for j, t, q in run(pairs) if abs(q - t) > j.tol(opts.joint_tol)]
-    out = []
-    for j, t in failed:
-        (_, _, q), = run([(j, t)])
-        if abs(q - t) > j.tol(opts.joint_tol):
-            out.append((j, t, q))
-    return out
-
