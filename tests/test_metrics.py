@@ -269,6 +269,15 @@ def exported(tmp_path_factory):
     return root
 
 
+def _own_link_distance(sample, dense_pc) -> np.ndarray:
+    """Distance (N,) from each point of ``sample`` to the dense analytic points of its own link."""
+    d = np.empty(len(sample.points))
+    for i in np.unique(sample.link):
+        own = dense_pc.points[dense_pc.link == dense_pc.link_names.index(sample.link_names[i])]
+        d[sample.link == i] = cKDTree(own).query(sample.points[sample.link == i])[0]
+    return d
+
+
 @pytest.mark.parametrize("category", CATEGORIES)
 def test_reader_on_artipg_folders(exported, category):
     for s in range(N_EXPORTED):
@@ -280,7 +289,7 @@ def test_reader_on_artipg_folders(exported, category):
         assert mesh.points.shape == npz.points.shape == (1024, 3)
         # the URDF's meshes through its kinematics are the analytic surfaces: mesh samples are as
         # close to a dense analytic sample as exact analytic samples are (plus tessellation error)
-        dense = obj.sample_points(40_000, seed=7).points
+        dense = obj.sample_points(40_000, seed=7).points  # exact samples of the analytic surfaces
         diag = np.linalg.norm(mesh.structure.extents)
         d_mesh = np.median(cKDTree(dense).query(mesh.points)[0])
         d_npz = np.median(cKDTree(dense).query(npz.points)[0])
@@ -288,17 +297,14 @@ def test_reader_on_artipg_folders(exported, category):
         np.testing.assert_allclose(mesh.structure.extents, np.ptp(dense, axis=0), atol=1e-2 * diag)
         assert mesh.structure.n_joints == obj.dof
         assert mesh.structure.n_links == sum(1 for lk in obj.links if lk.parts)
-        # link labels agree with the analytic labels: the same links carry points
-        names_m = {mesh.link_names[i] for i in np.unique(mesh.link)}
-        names_n = {npz.link_names[i] for i in np.unique(npz.link)}
-        big = {lk.name for lk in obj.links if lk.parts}
-        assert names_m <= big and names_n <= big
-        # each mesh-sampled point lies on its own link's surface (near an analytic point of that link)
-        for name in names_m & names_n:
-            pm = mesh.points[mesh.link == mesh.link_names.index(name)]
-            pn = npz.points[npz.link == npz.link_names.index(name)]
-            assert len(pm) == 0 or len(pn) < 20 or np.median(cdist(pm, pn).min(axis=1)) < 0.05 * np.linalg.norm(
-                mesh.structure.extents)
+        # per-point link labels: every point lies on the surface of the link it is labelled with,
+        # as closely as the analytic npz points do (distance to a dense analytic sample of that link)
+        dense_pc = obj.sample_points(40_000, seed=7)
+        for sample in (mesh, npz):
+            assert {sample.link_names[i] for i in np.unique(sample.link)} <= {lk.name for lk in obj.links if lk.parts}
+        dm, dn = _own_link_distance(mesh, dense_pc), _own_link_distance(npz, dense_pc)
+        assert np.median(dm) < 2 * np.median(dn) + 1e-3 * diag
+        assert np.quantile(dm, 0.99) < 2 * np.quantile(dn, 0.99) + 1e-2 * diag
 
 
 def test_reader_auto_prefers_npz_and_same_folder_same_cloud(exported):

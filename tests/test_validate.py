@@ -465,3 +465,54 @@ def test_simulators_catch_a_hollow_body_exported_as_one_hull(tmp_path):
     assert not r.ok
     found = {(i.kind, i.detail.split(":")[0]) for i in r.issues}
     assert {("sim_rest_penetration", "pybullet"), ("sim_rest_penetration", "mujoco")} <= found
+
+
+def test_a_rack_behind_a_door_needs_the_door_open_but_a_knob_on_its_door_does_not():
+    """Sweep collisions with a part another joint moves count only if opening that
+    joint does not clear the way; a part riding on the blocking joint gets no pass."""
+    def cab(ctx):
+        root, body, pose = _cabinet(ctx)
+        lo, hi = body.anchor("cavity_lo"), body.anchor("cavity_hi")
+        w, h = W - 0.003, H - 0.003
+        door = mount_hinged(ctx.builder, root, slab_door(ctx.p.scope("door"), w, h), front_x=lo[0],
+                            center_yz=(0.0, 0.0), size_yz=(w, h), side="+y", limits=(0.0, 1.6), parent_pose=pose)
+        tray = Part("tray", "test_tray", [cuboid(0.3, 0.3, 0.01)])
+        rack = ctx.builder.create_link("tray", root)
+        rack.set_joint("prismatic", pose @ translation(lo[0] + 0.16, 0.0, 0.0), axis=(-1, 0, 0), limits=(0.0, 0.3))
+        rack.add(tray)
+        # a lever on the door that turns into the door itself: a real fault
+        knob = ctx.builder.create_link("knob", door)
+        knob.set_joint("revolute", translation(-0.02, -w / 2 + 0.06, 0.0), axis=(0, 0, 1), limits=(0.0, 1.5))
+        knob.add(Part("knob", "test_knob", [cuboid(0.01, 0.08, 0.01)]))
+
+    obj = Category("test_rack", {"plain": 1.0}, (Slot("body", cab),)).generate(0)
+    r = check_object(obj).checks["joint_sweep"]
+    assert r.info["needs_open"] == {"joint_tray_0": ["joint_door_0"]}
+    assert {i.joint for i in r.issues if i.kind == "sweep_penetration"} == {"joint_knob_0"}
+    assert all("knob_0" in i.links for i in r.issues)
+
+
+@pytest.mark.parametrize("shape", ["sphere", "cylinder on its side", "torus", "cone on its tip"])
+def test_point_and_line_contacts_touch_and_gaps_are_measured(shape):
+    """Curved pieces touching a plane in a point or a line are not floating; lifted by
+    3 mm they are, and the gap is measured (samples alone would miss the contact)."""
+    from artipg.geometry.transforms import rot_x
+    from artipg.model import ObjectBuilder
+
+    R = 0.02
+    prim = {"sphere": sphere(R, pose=translation(0, 0, R)),
+            "cylinder on its side": cylinder(R, 0.1, translation(0, 0, R) @ rot_x(math.pi / 2)),
+            "torus": torus(3 * R, R, pose=translation(0, 0, R)),
+            "cone on its tip": frustum(0.0, R, 2 * R, translation(0, 0, R))}[shape]
+    for lift in (0.0, 0.003):
+        b = ObjectBuilder()
+        root = b.create_link("base")
+        root.add(Part("body", "test_plate", [cuboid(0.4, 0.4, 0.02, translation(0, 0, 0.01))]))
+        root.add(Part("knob", "test_knob", [prim]), translation(0, 0, 0.02 + lift))
+        obj = b.build("test", "plain", 0)
+        r = check_object(obj).checks["floating"]
+        if lift == 0.0:
+            assert r.ok, [i.to_json() for i in r.issues]
+        else:
+            (issue,) = r.issues
+            assert issue.kind == "floating_part" and issue.amount == pytest.approx(lift, abs=2e-4)

@@ -26,16 +26,16 @@ import math
 
 import numpy as np
 
-from artipg.geometry import cuboid, cuboid_between, cylinder, frustum, rect_ring, ring, torus, tube
-from artipg.geometry.transforms import rot_x, rot_y, rot_z, translation
-from artipg.geometry.tube import arc, line
+from artipg.geometry import cuboid_between, cylinder, rect_ring, ring
+from artipg.geometry.transforms import rot_z, translation
 from artipg.model.part import Part, Region
 from artipg.rules import Category, Slot
-from artipg.templates.seating import (BACKS, CASTERS, SEATS, STOOL_SEATS, paddle_lever, star_base, wheel)
+from artipg.templates.chair_frames import (column_stool_base, folding_frame, folding_rear_legs, leg_stool_frame,
+                                           post_arms, ring_back)
+from artipg.templates.seating import BACKS, CASTERS, SEATS, STOOL_SEATS, paddle_lever, star_base, wheel
 from artipg.templates.supports import round_legs, square_legs, tapered_legs
 
 LEGS = {square_legs: 1.0, round_legs: 1.0, tapered_legs: 1.0}
-_ALONG_Y = rot_x(math.pi / 2)
 
 
 def _box(lo, hi, role="frame"):
@@ -129,37 +129,26 @@ def _stool(ctx):
     hs, d = p.uniform("seat_height", 0.6, 0.8), p.uniform("seat_size", 0.32, 0.42)
     seat = ctx.choose("seat", STOOL_SEATS)(p.scope("seat"), d, d)
     gas = p.flag("gas_lift", 0.45)
-    bh, br = p.uniform("bearing", 0.04, 0.06) if gas else p.uniform("bearing", 0.015, 0.03), p.uniform("bearing_radius", 0.06, 0.1)
+    bh = p.uniform("bearing", 0.04, 0.06) if gas else p.uniform("bearing", 0.015, 0.03)
+    br = p.uniform("bearing_radius", 0.06, 0.1)
     z_sw = hs - seat.anchor("top")[2] - bh
     root = ctx.builder.create_link("base")
     parent, origin = root, translation(0, 0, z_sw)
     if gas or p.flag("column", 0.6):
-        rb, th = p.uniform("base_radius", 0.19, 0.25), p.uniform("base_height", 0.02, 0.05)
-        ro, zf = p.uniform("column_radius", 0.022, 0.035), p.uniform("footrest_z", 0.25, 0.35)
-        Rf = p.uniform("footrest_radius", 0.15, 0.2)
-        prims = [frustum(rb, rb * p.uniform("dome", 0.6, 1.0), th, translation(0, 0, th / 2), role="foot"),
-                 torus(Rf, 0.01, pose=translation(0, 0, zf), role="footrest")]
-        prims += [cuboid(Rf - ro + 0.002, 0.012, 0.012, rot_z(2 * math.pi * i / 3) @ translation((Rf + ro - 0.002) / 2, 0, zf),
-                         role="spoke") for i in range(3)]
-        if gas:
-            travel, z_t = p.uniform("lift", 0.08, 0.15), z_sw - p.uniform("exposed", 0.04, 0.08)
-            prims.append(ring(ro, ro - 0.004, z_t - th, pose=translation(0, 0, (z_t + th) / 2), role="column"))
+        base = column_stool_base(p.scope("base"), z_sw, gas)
+        root.add(base)
+        if gas:  # the piston slides in the tube's bore
+            r, _, z0 = base.anchor("bore")
             parent = ctx.builder.create_link("column", root)
-            parent.set_joint("prismatic", origin, axis=(0, 0, 1), limits=(0.0, travel))
-            parent.add(Part("base", "piston", [cylinder(ro - 0.0055, z_sw - th - 0.005, translation(0, 0, -(z_sw - th - 0.005) / 2))]))
+            parent.set_joint("prismatic", origin, axis=(0, 0, 1), limits=(0.0, p.uniform("lift", 0.08, 0.15)))
+            L = z_sw - z0 - 0.005
+            parent.add(Part("base", "piston", [cylinder(r - 0.0015, L, translation(0, 0, -L / 2), role="piston")]))
             origin = translation(0, 0, 0)
-        else:
-            prims.append(cylinder(ro, z_sw - th, translation(0, 0, (z_sw + th) / 2), role="column"))
-        root.add(Part("base", "column_base", prims))
     else:
-        fw, tp = p.uniform("footprint", 0.34, 0.44), p.uniform("plate", 0.02, 0.03)
-        legs = ctx.choose("legs", LEGS)(p.scope("legs"), fw, fw, z_sw - tp)
-        b = legs.primitives[0].bounds()
-        c, zr = -(b[0] + b[1]) / 2, p.uniform("rung_z", 0.22, 0.32)
-        rungs = [_box((-c[0], s * c[1] - 0.01, zr), (c[0], s * c[1] + 0.01, zr + 0.02), "rung") for s in (-1, 1)]
-        rungs += [_box((s * c[0] - 0.01, -c[1], zr), (s * c[0] + 0.01, c[1], zr + 0.02), "rung") for s in (-1, 1)]
+        fw = p.uniform("footprint", 0.34, 0.44)
+        legs = ctx.choose("legs", LEGS)(p.scope("legs"), fw, fw, z_sw - p.uniform("plate", 0.02, 0.03))
         root.add(legs)
-        root.add(Part("base", "stool_frame", rungs + [cuboid(fw, fw, tp, translation(0, 0, z_sw - tp / 2), role="plate")]))
+        root.add(leg_stool_frame(p.scope("frame"), legs, fw, z_sw))
     sl = ctx.builder.create_link("seat", parent)
     sl.set_joint("continuous", origin)
     sl.add(Part("base", "bearing", [cylinder(br, bh, translation(0, 0, bh / 2), role="bearing")]))
@@ -167,10 +156,7 @@ def _stool(ctx):
     if gas:
         _lever(ctx, sl, p.scope("lever"), 0.0, -br, 0.02, bh - 0.02)
     if p.flag("back", 0.4):
-        ro, t, h, a = 0.47 * d, p.uniform("back_thickness", 0.012, 0.02), p.uniform("back_height", 0.06, 0.12), p.uniform("back_arc", 1.4, 2.2)
-        zb = bh + seat.anchor("top")[2] + p.uniform("back_gap", 0.1, 0.2)
-        posts = [cylinder(0.01, zb - bh, rot_z(s * a / 3) @ translation(ro - t / 2, 0, (zb + bh) / 2), role="post") for s in (-1, 1)]
-        sl.add(Part("backrest", "ring_back", posts + [ring(ro, ro - t, h, a, rot_z(-a / 2) @ translation(0, 0, zb + h / 2), role="board")]))
+        sl.add(ring_back(p.scope("back"), 0.47 * d, bh, bh + seat.anchor("top")[2]))
     return {}
 
 
@@ -178,34 +164,23 @@ def _folding(ctx):
     p = ctx.p
     hs, sd, sw = p.uniform("seat_height", 0.43, 0.46), p.uniform("seat_depth", 0.36, 0.42), p.uniform("seat_width", 0.38, 0.44)
     rp, st = p.uniform("tube_radius", 0.009, 0.0125), p.uniform("seat_thickness", 0.015, 0.03)
-    lo, up, hb = p.uniform("leg_angle", 0.45, 0.65), p.uniform("back_angle", 0.1, 0.25), p.uniform("back_top", 0.35, 0.45)
-    zb, Rb = hs - st / 2, 0.05
-    d = Rb * math.tan((lo - up) / 2)
-    fx = -zb * math.tan(lo)
-    path = [line(zb / math.cos(lo) - d), arc(Rb, lo - up), line((hb + st / 2) / math.cos(up) - d)]
+    frame = folding_frame(p.scope("frame"), hs, sd, sw, rp, st)
     root = ctx.builder.create_link("base")
-    prims = [pr for s in (-1, 1) for pr in tube(rp, path, math.pi / 2 - lo, translation(fx, s * (sw / 2 + rp), 0), role="tube")]
-    bh, tb = p.uniform("back_height", 0.12, 0.2), p.uniform("back_thickness", 0.01, 0.02)
-    zc = hs + hb - 0.02 - bh / 2
-    T = translation((zc - zb) * math.tan(up) + 0.3 * rp + tb / 2, 0, zc) @ rot_y(up)
-    prims.append(cuboid(tb, sw + 2 * rp, bh, T, role="board"))
-    root.add(Part("frame", "folding_frame", prims))
-    seat = ctx.builder.create_link("seat", root)
-    seat.set_joint("revolute", translation(0, 0, hs), axis=(0, 1, 0), limits=(0.0, p.uniform("seat_fold", 1.35, 1.5)))
-    seat.add(Part("seat", "folding_seat", [_box((-sd, -sw / 2, -st), (0.0, sw / 2, 0.0), "cushion")], regions={"lift": Region(("cushion",))}))
-    f = p.uniform("pivot", 0.45, 0.7)
-    Q = np.array([fx * (1 - f), zb * f])
-    R = np.array([p.uniform("rear_foot", 0.05, 0.15), 0.0])
-    u, v = R - Q, np.array([fx, 0.0]) - Q
-    Lr, gc = float(np.hypot(*u)), p.uniform("crossbar", 0.75, 0.9)
-    alpha = math.acos(float(u @ v) / Lr / float(np.hypot(*v)))
-    rear = ctx.builder.create_link("leg", root)
-    rear.set_joint("revolute", translation(Q[0], 0, Q[1]), axis=(0, 1, 0),
-                   limits=(0.0, alpha - math.asin((0.9 * rp + rp + 0.004) / (gc * Lr))))
-    yl = sw / 2 + 3 * rp
-    legs = [cylinder(rp, Lr, translation(u[0] / 2, s * yl, u[1] / 2) @ rot_y(math.atan2(u[0], u[1])), role="leg") for s in (-1, 1)]
-    legs.append(cylinder(0.9 * rp, 2 * yl, translation(gc * u[0], 0, gc * u[1]) @ _ALONG_Y, role="crossbar"))
-    rear.add(Part("leg", "rear_legs", legs))
+    root.add(frame)
+    seat = ctx.builder.create_link("seat", root)  # flips up about its rear edge, staying in front of it
+    seat.set_joint("revolute", translation(*frame.anchor("seat_pivot")), axis=(0, 1, 0),
+                   limits=(0.0, p.uniform("seat_fold", 1.35, 1.5)))
+    seat.add(Part("seat", "folding_seat", [_box((-sd, -sw / 2, -st), (0.0, sw / 2, 0.0), "cushion")],
+                  regions={"lift": Region(("cushion",))}))
+    q, fx = frame.anchor("leg_pivot"), frame.anchor("front_foot")[0]
+    u = np.array([p.uniform("rear_foot", 0.05, 0.15) - q[0], -q[2]])  # pivot -> rear foot
+    v = np.array([fx - q[0], -q[2]])  # pivot -> front foot
+    legs = folding_rear_legs(p.scope("rear"), u, sw / 2 + 3 * rp, rp)  # outside the tubes and their plates
+    lc, rc, _ = legs.anchor("crossbar")
+    alpha = math.acos(float(u @ v) / float(np.hypot(*u)) / float(np.hypot(*v)))
+    rear = ctx.builder.create_link("leg", root)  # folds forward until the crossbar nears the front tubes
+    rear.set_joint("revolute", translation(*q), axis=(0, 1, 0), limits=(0.0, alpha - math.asin((rc + rp + 0.004) / lc)))
+    rear.add(legs)
     return {}
 
 
@@ -217,16 +192,10 @@ def _four_leg(ctx):
     root = ctx.builder.create_link("base")
     root.add(ctx.choose("legs", LEGS)(p.scope("legs"), sd, sw, hs - st))
     root.add(seat, translation(0, 0, hs - st))
-    if p.flag("arms", 0.4):
-        pw, ha, e = p.uniform("arm_post", 0.025, 0.04), p.uniform("arm_height", 0.18, 0.25), p.uniform("arm_inset", 0.02, 0.06)
-        prims = []
-        for s in (-1, 1):
-            y0, y1 = sorted((s * sw / 2, s * (sw / 2 - pw)))
-            prims += [_box((-sd / 2 + e, y0, hs), (-sd / 2 + e + pw, y1, hs + ha)),
-                      _box((sd / 2 - pw - 0.006, y0, hs), (sd / 2 - 0.006, y1, hs + ha)),
-                      _box((-sd / 2 - 0.02, y0 - 0.01, hs + ha), (sd / 2 - 0.006, y1 + 0.01, hs + ha + 0.025), "pad")]
-        root.add(Part("armrest", "post_arms", prims, regions={"push": Region(("pad",))}))
-    return {"link": root, "pivot": translation(sd / 2, 0, hs - st), "width": sw, "height": (0.3, 0.5), "z0": st, "spine": 0.0}
+    if p.flag("arms", 0.4):  # they end in front of the reclining back's pivot
+        root.add(post_arms(p.scope("arms"), sd, sw, hs))
+    return {"link": root, "pivot": translation(sd / 2, 0, hs - st), "width": sw, "height": (0.3, 0.5), "z0": st,
+            "spine": 0.0}
 
 
 BUILD = {"office": _office, "bar_stool": _stool, "folding": _folding, "four_leg": _four_leg}

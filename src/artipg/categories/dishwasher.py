@@ -117,7 +117,7 @@ def _controls(ctx, parent, pose, W, band, ctrl):
         q = p.scope(f"button{i}")
         b = tmpl(q, radius=size / 2 * 0.8) if tmpl.__name__ == "round_button" else tmpl(q, width=size, height=0.7 * size)
         T = pose @ translation(0, lo + (hi - lo) * (i + 0.5) / n, 0)
-        parent.add(button_bezel(q.scope("bezel"), b), T)
+        parent.add(button_bezel(q.scope("bezel"), b, gap=0.0006), T)
         mount_button(ctx.builder, parent, b, T)
 
 

@@ -169,7 +169,7 @@ def _controls(ctx, root, panel):
         q = p.scope(f"button{i}")
         b = tmpl(q, radius=0.007) if tmpl.__name__ == "round_button" else tmpl(q, width=0.016, height=0.011)
         T = pose @ translation(0, lo + (hi - lo) * (i + 0.5) / k, -h / 4)
-        root.add(button_bezel(q.scope("bezel"), b), T)
+        root.add(button_bezel(q.scope("bezel"), b, gap=0.0006), T)
         mount_button(ctx.builder, root, b, T)
 
 

@@ -3,7 +3,7 @@
 Parts: an insulated carcass (walls 4-6 cm) on a recessed plinth, split into a fridge
 and a freezer compartment by a horizontal or vertical mullion, with glass shelves;
 thick doors (slab, framed panel-ready, or glass on beverage fridges) carrying 1-4
-door bins on their inner face and a long vertical handle near the free edge; freezer
+door bins on their inner face (solid doors) and a long vertical handle near the free edge; freezer
 drawers with horizontal handles; hinge covers on the top; on side-by-side and French
 door models an optional water dispenser (a recess on a door with a push paddle).
 Joints: doors revolute about vertical hinges on their outer edges (1.6-2.1 rad; French
@@ -87,7 +87,7 @@ def _door(ctx, root, q, outer, side, inner, obstacle, dims, tmpl, handle, limit)
     reach = math.sqrt(max(0.0, (obstacle - 0.006) ** 2 - (t + b) ** 2))
     ya, yb = sorted((hy - math.copysign(reach, hy - cy), inner[1] - 0.01 if side == "+y" else inner[0] + 0.01))
     ya, yb = max(ya, inner[0] + 0.01), min(yb, inner[1] - 0.01)
-    if yb - ya > 0.1 and inner[3] - inner[2] > 0.2:
+    if yb - ya > 0.1 and inner[3] - inner[2] > 0.2 and door.template != "glass_door":  # no bins on glass doors
         n = q.integers("bins", 1, max(1, min(4, int((inner[3] - inner[2]) / 0.3))))
         link.add(door_bins(q.scope("bins"), ya - cy, yb - cy, inner[2] + 0.01 - cz, inner[3] - 0.01 - cz, b, n), door.pose)
     return link, door

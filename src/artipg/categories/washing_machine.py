@@ -178,7 +178,7 @@ def _controls(ctx, root, pose, w, h, twin):
         q = p.scope(f"button{i}")
         b = tmpl(q, radius=0.008) if tmpl.__name__ == "round_button" else tmpl(q, width=0.018, height=0.012)
         T = pose @ translation(0, lo + (hi - lo) * (i + 0.5) / k, 0)
-        root.add(button_bezel(q.scope("bezel"), b), T)
+        root.add(button_bezel(q.scope("bezel"), b, gap=0.0006), T)
         mount_button(ctx.builder, root, b, T)
 
 

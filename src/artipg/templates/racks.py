@@ -15,8 +15,12 @@ from __future__ import annotations
 import math
 
 from artipg.geometry import cuboid, cuboid_between, cylinder, rect_ring
-from artipg.geometry.transforms import rot_z, translation
+from artipg.geometry.transforms import rot_x, rot_y, rot_z, translation
 from artipg.model.part import Part, Region
+
+
+_YZ = rot_y(math.pi / 2)  # rect ring in the y-z plane: local x -> -z (height), y -> y
+_XZ = rot_x(math.pi / 2)  # rect ring in the x-z plane: local x -> x, local y -> z
 
 
 def door_bins(p, y0: float, y1: float, z0: float, z1: float, depth: float, n: int | None = None) -> Part:
@@ -38,17 +42,20 @@ def _wire_box(x0, x1, y0, y1, z0, z1, r, role):
                      translation((x0 + x1) / 2, (y0 + y1) / 2, (z0 + z1) / 2), role=role)
 
 
-def wire_rack(p, depth: float, width: float, height: float) -> Part:
-    """Basket of wire: a bottom frame with cross wires, a top rim and corner posts."""
+def wire_rack(p, depth: float, width: float, height: float, tines: bool | None = None) -> Part:
+    """Basket of wire: a bottom frame with 3-6 cross wires (optionally carrying plate
+    tines) and four wire-loop walls."""
     r = p.uniform("wire", 0.003, 0.005)
-    n = p.integers("cross_wires", 4, 8)
-    tines = p.flag("tines", 0.6)
+    n = p.integers("cross_wires", 3, 6)
+    tines = p.flag("tines", 0.6, fixed=tines)
     D, W = depth / 2, width / 2
-    prims = [_wire_box(-D, D, -W, W, 0.0, 2 * r, 2 * r, "frame"),
-             _wire_box(-D, D, -W, W, height - 2 * r, height, 2 * r, "rim")]
-    for sx in (-1, 1):
-        for sy in (-1, 1):
-            prims.append(cuboid(2 * r, 2 * r, height, translation(sx * (D - r), sy * (W - r), height / 2), role="frame"))
+    prims = [_wire_box(-D, D, -W, W, 0.0, 2 * r, 2 * r, "frame")]
+    for sx in (-1, 1):  # front and back walls (loops in the y-z plane), then the sides (x-z plane)
+        prims.append(rect_ring(height, width, 2 * r, height - 4 * r, width - 4 * r,
+                               translation(sx * (D - r), 0, height / 2) @ _YZ, role="rim"))
+    for sy in (-1, 1):
+        prims.append(rect_ring(depth, height, 2 * r, depth - 4 * r, height - 4 * r,
+                               translation(0, sy * (W - r), height / 2) @ _XZ, role="rim"))
     for i in range(n):
         y = -W + width * (i + 1) / (n + 1)
         prims.append(cuboid(depth - 2 * r, 2 * r, 2 * r, translation(0, y, r), role="wire"))
@@ -86,7 +93,7 @@ def spray_arm(p, radius: float, height: float) -> Part:
 def oven_rack(p, depth: float, width: float) -> Part:
     """Flat oven shelf: a wire frame with 6-12 wires across, resting on side runners."""
     r = p.uniform("wire", 0.0025, 0.004)
-    n = p.integers("wires", 6, 12)
+    n = p.integers("wires", 4, 8)
     D, W = depth / 2, width / 2
     prims = [_wire_box(-D, D, -W, W, 0.0, 2 * r, 2 * r, "frame")]
     prims += [cuboid(2 * r, width - 2 * r, 2 * r, translation(-D + depth * (i + 1) / (n + 1), 0, r), role="wire")

@@ -23,7 +23,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from artipg.validate.contacts import deepest_point, overlapping, pair_distance, world_boxes
+from artipg.validate.contacts import deepest_point, overlapping, pair_distance, refine_distance, world_boxes
 from artipg.validate.kinematics import Kinematics, motion, rigid_inverse
 from artipg.validate.report import CheckResult, Issue
 from artipg.validate.shapes import Pieces
@@ -94,6 +94,14 @@ def run_checks(kin: Kinematics, pieces: Pieces, tol: Tolerances = Tolerances()) 
         s["Wa"], s["Wb"] = Wa[k:k + n], Wb[k:k + n]
         k += n
     rest_s = scenes[0]
+    # curved pieces whose samples say "apart" while their boxes say "maybe touching"
+    # (a ball on a plane): refine the distance before judging contact
+    ra, rb, rd = rest_s["a"], rest_s["b"], rest_s["d"]
+    lb = np.sqrt((np.maximum(np.abs(c0[ra] - c0[rb]) - h0[ra] - h0[rb], 0.0) ** 2).sum(axis=1))
+    amb = np.flatnonzero(~(pieces.is_box[ra] & pieces.is_box[rb]) & (rd > tol.floating) & (lb <= tol.floating))
+    if len(amb):
+        rd[amb] = np.minimum(rd[amb], refine_distance(pieces, ra[amb], rb[amb], W0[ra[amb]], W0[rb[amb]],
+                                                      iters=3, stop_below=tol.floating))
     return {
         "penetration": _penetration(kin, pieces, rest_s, tol),
         "floating": _floating(kin, pieces, W0, rest_s, tol),
@@ -119,7 +127,10 @@ def _sweep_pairs(kin, pieces, rest, W0, c0, h0, tol) -> dict:
            "scene": empty, "joint": empty, "q": np.zeros(0), "movable": movable}
     if not len(movable) or pieces.n == 0:
         return out
-    moving = kin.descendants[movable][:, pieces.link]  # (J, M)
+    subtree = kin.descendants[movable][:, pieces.link]  # (J, M): pieces each joint moves
+    # a solid of revolution turning about its own axis occupies the same space at
+    # every joint value: its rest result stands for the whole sweep
+    moving = subtree & ~_turns_in_place(kin, pieces, rest, W0, movable)
     values = [kin.sweep_values(i, tol.sweep_poses) for i in movable]
     scene_joint = np.repeat(np.arange(len(movable)), [len(v) for v in values])
     scene_q = np.concatenate(values)
@@ -142,7 +153,7 @@ def _sweep_pairs(kin, pieces, rest, W0, c0, h0, tol) -> dict:
     counts = np.diff(np.r_[starts, len(ks)])
     lo = np.minimum.reduceat((cm - hm)[order], starts)
     hi = np.maximum.reduceat((cm + hm)[order], starts)
-    cand = overlapping(0.5 * (lo + hi), 0.5 * (hi - lo), c0, h0, -_OVERLAP) & ~moving[ukey // pieces.n]
+    cand = overlapping(0.5 * (lo + hi), 0.5 * (hi - lo), c0, h0, -_OVERLAP) & ~subtree[ukey // pieces.n]
     u, b = np.nonzero(cand)
     if not len(u):
         return out
@@ -153,6 +164,28 @@ def _sweep_pairs(kin, pieces, rest, W0, c0, h0, tol) -> dict:
     ok = (np.abs(cm[rows] - c0[bb]) - (hm[rows] + h0[bb]) < -_OVERLAP).all(axis=1)
     rows, bb = rows[ok], bb[ok]
     out.update(a=p_idx[rows], b=bb, Wa=Wm[rows], Wb=W0[bb], scene=s_idx[rows])
+    return out
+
+
+def _turns_in_place(kin, pieces, rest, W0, movable) -> np.ndarray:
+    """Boolean (J, M): piece m is a full solid of revolution (frustum, full ring or
+    torus, sphere) whose axis is joint j's (revolute or continuous) axis line."""
+    out = np.zeros((len(movable), pieces.n), dtype=bool)
+    sym = pieces.symmetric
+    if not sym.any():
+        return out
+    m = np.flatnonzero(sym)
+    z = W0[m, :3, 2]
+    o = W0[m, :3, 3]
+    for k, i in enumerate(movable):
+        if kin.joint_types[i] == "prismatic":
+            continue
+        a = rest[i][:3, :3] @ kin.axis[i]
+        p = rest[i][:3, 3]
+        along = np.abs(np.cross(z, a)).max(axis=1) < 1e-9
+        d = o - p
+        on_axis = np.linalg.norm(d - (d @ a)[:, None] * a, axis=1) < 1e-9
+        out[k, m] = along & on_axis
     return out
 
 
@@ -243,10 +276,18 @@ def _gap(pieces, W0, src_mask, tgt_mask) -> float:
     lb = np.sqrt((np.maximum(np.abs(c[A] - c[B]) - h[A] - h[B], 0.0) ** 2).sum(axis=1))
     order = np.argsort(lb, kind="stable")
     first = order[:8]
-    best = float(pair_distance(pieces, A[first], B[first], W0[A[first]], W0[B[first]], np.inf).min())
+    d = pair_distance(pieces, A[first], B[first], W0[A[first]], W0[B[first]], np.inf)
+    best = float(d.min())
     rest = order[8:][lb[order[8:]] < best]
     if len(rest):
-        best = min(best, float(pair_distance(pieces, A[rest], B[rest], W0[A[rest]], W0[B[rest]], np.inf).min()))
+        d2 = pair_distance(pieces, A[rest], B[rest], W0[A[rest]], W0[B[rest]], np.inf)
+        first, d = np.concatenate([first, rest]), np.concatenate([d, d2])
+        best = float(d.min())
+    # sampled distances of curved pieces overshoot: refine the closest candidates
+    cand = first[np.argsort(d, kind="stable")[:4]]
+    cand = cand[~(pieces.is_box[A[cand]] & pieces.is_box[B[cand]])]
+    if len(cand):
+        best = min(best, float(refine_distance(pieces, A[cand], B[cand], W0[A[cand]], W0[B[cand]]).min()))
     return max(best, 0.0)
 
 
@@ -267,6 +308,8 @@ def _floating(kin, pieces, W0, s, tol) -> CheckResult:
                 continue
             links = np.flatnonzero((comp == c) & has_geom)
             gap = _gap(pieces, W0, np.isin(pieces.link, links), comp[pieces.link] == main)
+            if gap <= tol.floating:  # a curved contact the quick pass could not confirm
+                continue
             parents = sorted({kin.names[kin.parent[i]] for i in links if kin.parent[i] >= 0})
             issues.append(Issue("floating", "floating_link", gap, [kin.names[i] for i in links], [],
                                 detail="does not touch the rest of the object (parent: " + ", ".join(parents) + ")"))
@@ -289,11 +332,56 @@ def _floating(kin, pieces, W0, s, tol) -> CheckResult:
             group = parts[pcomp[parts] == c]
             others = parts[pcomp[parts] != c]
             gap = _gap(pieces, W0, np.isin(pieces.part, group), np.isin(pieces.part, others))
+            if gap <= tol.floating:
+                continue
             issues.append(Issue("floating", "floating_part", gap, [kin.names[li]],
                                 [pieces.part_names[p] for p in group], detail="does not touch the other parts of its link"))
     issues.sort(key=lambda i: -i.amount)
     worst = max([0.0] + [i.amount for i in issues])
     return CheckResult("floating", not issues, worst, issues)
+
+
+def _blocker(kin, link: int, j: int) -> int:
+    """The movable joint closest to the root among those at or above ``link`` that
+    joint ``j`` does not ride on (its link index), or -1: opening it moves ``link``
+    (a knob on a door moves with the door)."""
+    out = -1
+    while link > 0:
+        if kin.joint_types[link] != "fixed" and not kin.descendants[link, j]:
+            out = link
+        link = int(kin.parent[link])
+    return out
+
+
+def _needs_open(kin, pieces, sw, tol, bad) -> dict:
+    """Sweep collisions with a part that another joint moves (a rack behind a
+    dishwasher door): re-checked with that joint open; returns {(j, k): depth} of
+    the (moving joint, blocking joint) link indices, depth < 0 when opening k clears
+    the way for j."""
+    pairs = {}
+    for w in bad:
+        j = int(sw["movable"][sw["joint"][sw["scene"][w]]])
+        k = _blocker(kin, int(pieces.link[sw["b"][w]]), j)
+        if k > 0:
+            pairs[(j, k)] = None
+    out = {}
+    for j, k in pairs:
+        sub_j = kin.subtree(j)[pieces.link]
+        sub_k = kin.subtree(k)[pieces.link]
+        up = kin.open_values(1.0)[kin.joint_names[k]]
+        A, B, WA, WB = [], [], [], []
+        for q in kin.sweep_values(j, tol.sweep_poses):
+            P = kin.poses({kin.joint_names[j]: q, kin.joint_names[k]: up})
+            W = P[pieces.link] @ pieces.T
+            c, h = world_boxes(pieces, W)
+            a, b = np.flatnonzero(sub_j & ~sub_k), np.flatnonzero(sub_k & ~sub_j)
+            ov = overlapping(c[a], h[a], c[b], h[b], -_OVERLAP)
+            ia, ib = np.nonzero(ov)
+            A.append(a[ia]), B.append(b[ib]), WA.append(W[a[ia]]), WB.append(W[b[ib]])
+        a, b = np.concatenate(A), np.concatenate(B)
+        d = pair_distance(pieces, a, b, np.concatenate(WA), np.concatenate(WB), 0.0) if len(a) else np.zeros(0)
+        out[(j, k)] = float(-d.min()) if len(d) else 0.0
+    return out
 
 
 def _sweep_result(kin, pieces, sw, opens, tol) -> CheckResult:
@@ -302,6 +390,21 @@ def _sweep_result(kin, pieces, sw, opens, tol) -> CheckResult:
     worst = max(0.0, float(-D.min())) if len(D) else 0.0
     info = {"joints": int(len(sw["movable"])), "poses": int(len(sw["q"])), "open_poses": len(opens)}
     bad = np.flatnonzero(D < -tol.penetration)
+    if len(bad):
+        # a collision with a part another joint moves is no fault when opening that
+        # joint clears the way (racks behind a door): keep the rest
+        deps = _needs_open(kin, pieces, sw, tol, bad)
+        cleared = {jk for jk, depth in deps.items() if depth <= tol.penetration}
+        if cleared:
+            info["needs_open"] = {kin.joint_names[j]: sorted(kin.joint_names[k] for jj, k in cleared if jj == j)
+                                  for j in sorted({j for j, _ in cleared})}
+            keep = []
+            for w in bad:
+                j = int(sw["movable"][sw["joint"][sw["scene"][w]]])
+                if (j, _blocker(kin, int(pieces.link[sw["b"][w]]), j)) not in cleared:
+                    keep.append(w)
+            bad = np.array(keep, dtype=np.int64)
+            worst = max([0.0] + [float(-D[w]) for w in bad])
     if len(bad):
         joint = sw["joint"][sw["scene"][bad]]
         keys = np.column_stack([joint, pieces.link[sw["a"][bad]], pieces.link[sw["b"][bad]]])

@@ -206,6 +206,76 @@ def evaluate(pieces: Pieces, src: np.ndarray, tgt: np.ndarray, rel: np.ndarray, 
     return np.minimum.reduceat(d, first)
 
 
+def refine_distance(pieces: Pieces, a: np.ndarray, b: np.ndarray, Wa: np.ndarray, Wb: np.ndarray,
+                    starts: int = 3, iters: int = 10, stop_below: float = 0.0) -> np.ndarray:
+    """Upper bounds (K,) of the distance between pieces ``a`` and ``b`` posed at ``Wa``,
+    ``Wb`` (K, 4, 4), for pairs whose surface samples miss the closest points (a ball
+    on a plane touches it in one point).
+
+    From the ``starts`` samples of each piece nearest the other, alternately projects
+    onto the other piece's surface and back (Newton steps along the exact SDF's
+    gradient); every point reached on one surface bounds the distance by its signed
+    distance to the other. Converges to the distance for convex pieces. Vectorised
+    over all pairs and both directions; stops early once every pair is within
+    ``stop_below`` or no bound improves by more than 1 µm.
+    """
+    K = len(a)
+    if K == 0:
+        return np.zeros(0)
+    src = np.concatenate([a, b])
+    tgt = np.concatenate([b, a])
+    Ws = np.concatenate([Wa, Wb])
+    Wt = np.concatenate([Wb, Wa])
+    pieces.require(src)
+    counts = pieces.count[src]
+    job = np.repeat(np.arange(2 * K), counts)
+    first = np.cumsum(counts) - counts
+    idx = np.arange(int(counts.sum())) - first[job] + pieces.start[src][job]
+    X = _to_world(pieces.points[idx], Ws[job])
+    d = _sdf_world(pieces, tgt[job], Wt[job], X)
+    order = np.lexsort((d, job))  # by job, nearest first
+    rank = np.arange(len(order)) - first[job[order]]
+    pick = order[rank < starts]
+    p, j = X[pick], job[pick]
+    best = np.full(2 * K, np.inf)
+    np.minimum.at(best, j, d[pick])
+    for _ in range(iters):
+        q = _project(pieces, tgt[j], Wt[j], p)
+        p = _project(pieces, src[j], Ws[j], q)
+        before = np.minimum(best[:K], best[K:])
+        np.minimum.at(best, j, _sdf_world(pieces, tgt[j], Wt[j], p))
+        now = np.minimum(best[:K], best[K:])
+        if (now <= stop_below).all() or (before - now).max() < 1e-6:
+            break
+    return np.minimum(best[:K], best[K:])
+
+
+def _to_world(X, W):
+    return np.einsum("nij,nj->ni", W[:, :3, :3], X) + W[:, :3, 3]
+
+
+def _sdf_world(pieces, rows, W, X):
+    """Signed distance of world points ``X`` (n, 3) to pieces ``rows`` posed at ``W`` (n, 4, 4)."""
+    R = W[:, :3, :3]
+    L = np.einsum("nji,nj->ni", R, X - W[:, :3, 3])
+    return pieces.sdf(rows, L)
+
+
+def _project(pieces, rows, W, X, h: float = 1e-6):
+    """World points ``X`` (n, 3) moved onto the surfaces of pieces ``rows`` (one Newton
+    step along the central-difference gradient of the exact SDF)."""
+    R = W[:, :3, :3]
+    L = np.einsum("nji,nj->ni", R, X - W[:, :3, 3])
+    n = len(L)
+    offs = np.concatenate([np.eye(3), -np.eye(3)]) * h
+    Y = np.concatenate([L, (L[:, None, :] + offs[None]).reshape(-1, 3)])
+    d = pieces.sdf(np.concatenate([rows, np.repeat(rows, 6)]), Y)
+    d0, dd = d[:n], d[n:].reshape(n, 6)
+    g = (dd[:, :3] - dd[:, 3:]) / (2 * h)
+    g /= np.maximum(np.linalg.norm(g, axis=1, keepdims=True), 1e-12)
+    return _to_world(L - d0[:, None] * g, W)
+
+
 def deepest_point(pieces: Pieces, a: int, b: int, Wa: np.ndarray, Wb: np.ndarray) -> np.ndarray:
     """World point (3,) of the samples of ``a`` and ``b`` lying deepest in the other piece."""
     best, where = np.inf, 0.5 * (Wa[:3, 3] + Wb[:3, 3])

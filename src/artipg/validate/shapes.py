@@ -18,6 +18,7 @@ from __future__ import annotations
 import numpy as np
 
 from artipg.geometry.box import Cuboid, RectRing
+from artipg.geometry.revolve import Frustum, Ring, Sphere, Torus
 from artipg.validate.rowsdf import ROW_SDF
 
 #: Surface samples per square metre, and the per-component minimum / maximum.
@@ -73,6 +74,13 @@ class Pieces:
         self._kind = np.array([kinds.index(g) for g in self.geom], dtype=np.int64)
         self._nparams = [len(g.params) if g is not None else 0 for g in kinds]
         self.is_box = np.array([g is Cuboid for g in self.geom], dtype=bool)
+        # full solids of revolution about their local z axis (frustum, full ring or
+        # torus, sphere): unchanged by a turn about that axis
+        full = self.params[:, 3] >= 2 * np.pi - 1e-9 if self.params.shape[1] > 3 else np.zeros(len(self.geom), bool)
+        arc = self.params[:, 2] >= 2 * np.pi - 1e-9 if self.params.shape[1] > 2 else np.zeros(len(self.geom), bool)
+        self.symmetric = np.array([g in (Frustum, Sphere) for g in self.geom], dtype=bool)
+        self.symmetric |= np.array([g is Ring for g in self.geom], dtype=bool) & full
+        self.symmetric |= np.array([g is Torus for g in self.geom], dtype=bool) & arc
         M = len(self.geom)
         self.start = np.zeros(M, dtype=np.int64)
         self.count = np.zeros(M, dtype=np.int64)
