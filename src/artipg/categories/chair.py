@@ -55,7 +55,8 @@ def _lever(ctx, link, p, x, y, z, clearance):
 def _office(ctx):
     p = ctx.p
     n = p.choice("arms", {5: 8.0, 4: 1.0, 6: 1.0})
-    reach, rw, ww = p.uniform("reach", 0.28, 0.34), p.uniform("wheel_radius", 0.024, 0.033), p.uniform("wheel_width", 0.014, 0.022)
+    reach, rw = p.uniform("reach", 0.28, 0.34), p.uniform("wheel_radius", 0.024, 0.033)
+    ww = p.uniform("wheel_width", 0.014, 0.022)
     ah = p.uniform("arm_height", 0.03, 0.045)
     caster = ctx.choose("caster", CASTERS)(p.scope("caster"), rw, ww)
     za, (y0, y1, _) = caster.anchor("axle"), caster.anchor("wheel_y")
@@ -80,7 +81,8 @@ def _office(ctx):
     z_pt = p.uniform("seat_height", 0.42, 0.5) - st - mh
     z_t = max(min(hub_top + p.uniform("tube_length", 0.12, 0.2), z_pt - 0.03), hub_top + travel + 0.03)
     ro = p.uniform("tube_radius", 0.024, 0.03)
-    root.add(Part("base", "gas_tube", [ring(ro, ro - 0.004, z_t - hub_top, pose=translation(0, 0, (hub_top + z_t) / 2), role="tube")]))
+    tube = ring(ro, ro - 0.004, z_t - hub_top, pose=translation(0, 0, (hub_top + z_t) / 2), role="tube")
+    root.add(Part("base", "gas_tube", [tube]))
     lift = ctx.builder.create_link("column", root)
     lift.set_joint("prismatic", translation(0, 0, z_pt), axis=(0, 0, 1), limits=(0.0, travel))
     L = z_pt - hub_top - 0.005
@@ -115,8 +117,8 @@ def _office_arms(ctx, link, p, mw, sw, top, x_max):
             link.add(Part("armrest", "post_arm", prims + [_box((*post[0], 0.0), (*post[1], top + ha - pt)), pad]))
             continue
         zs = top + 0.02  # sleeve top
-        link.add(Part("armrest", "arm_sleeve", prims + [rect_ring(pw, pw, zs - 0.015, pw - 0.006, pw - 0.006,
-                                                                   translation(xa, yo, (zs + 0.015) / 2), role="sleeve")]))
+        sleeve = rect_ring(pw, pw, zs - 0.015, pw - 0.006, pw - 0.006, translation(xa, yo, (zs + 0.015) / 2), role="sleeve")
+        link.add(Part("armrest", "arm_sleeve", prims + [sleeve]))
         up = ctx.builder.create_link("armrest", link)
         up.set_joint("prismatic", translation(xa, yo, 0), axis=(0, 0, 1), limits=(0.0, travel))
         c = pw / 2 - 0.004
@@ -162,7 +164,8 @@ def _stool(ctx):
 
 def _folding(ctx):
     p = ctx.p
-    hs, sd, sw = p.uniform("seat_height", 0.43, 0.46), p.uniform("seat_depth", 0.36, 0.42), p.uniform("seat_width", 0.38, 0.44)
+    hs, sd = p.uniform("seat_height", 0.43, 0.46), p.uniform("seat_depth", 0.36, 0.42)
+    sw = p.uniform("seat_width", 0.38, 0.44)
     rp, st = p.uniform("tube_radius", 0.009, 0.0125), p.uniform("seat_thickness", 0.015, 0.03)
     frame = folding_frame(p.scope("frame"), hs, sd, sw, rp, st)
     root = ctx.builder.create_link("base")
@@ -186,7 +189,8 @@ def _folding(ctx):
 
 def _four_leg(ctx):
     p = ctx.p
-    hs, sd, sw = p.uniform("seat_height", 0.42, 0.48), p.uniform("seat_depth", 0.4, 0.5), p.uniform("seat_width", 0.4, 0.5)
+    hs, sd = p.uniform("seat_height", 0.42, 0.48), p.uniform("seat_depth", 0.4, 0.5)
+    sw = p.uniform("seat_width", 0.4, 0.5)
     seat = ctx.choose("seat", SEATS)(p.scope("seat"), sd, sw)
     st = seat.anchor("top")[2]
     root = ctx.builder.create_link("base")

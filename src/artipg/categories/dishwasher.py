@@ -77,7 +77,10 @@ def door(ctx):
         root.add(strip, translation(-D / 2, 0, Ht - cs / 2))
         panel_pose = translation(-D / 2 - tc, 0, Ht - cs / 2)
     tmpl = slab_door if ctrl != "door_top" else choose(ctx, p, "door", {slab_door: 1.0, framed_door: 1.0})
-    margin = cs + p.uniform("handle_gap", 0.03, 0.045) if ctrl == "door_front" else p.uniform("handle_margin", 0.035, 0.06)
+    if ctrl == "door_front":  # the handle goes under the control strip
+        margin = cs + p.uniform("handle_gap", 0.03, 0.045)
+    else:
+        margin = p.uniform("handle_margin", 0.035, 0.06)
     link = add_door(ctx, root, p.scope("door"), front_x=-D / 2, outer=(-W / 2 + 0.002, W / 2 - 0.002, zf, top), side="-z",
                     limits=(0.0, math.pi / 2), template=tmpl, handle=ctx.choose("handle", HANDLES), thickness=t,
                     handle_length=min(0.45, 0.7 * W), margin=margin)
@@ -115,7 +118,10 @@ def _controls(ctx, parent, pose, W, band, ctrl):
     n = p.integers("buttons", 2, max(2, min(6, int((hi - lo) / (size + 0.014)))))
     for i in range(n):
         q = p.scope(f"button{i}")
-        b = tmpl(q, radius=size / 2 * 0.8) if tmpl.__name__ == "round_button" else tmpl(q, width=size, height=0.7 * size)
+        if tmpl.__name__ == "round_button":
+            b = tmpl(q, radius=size / 2 * 0.8)
+        else:
+            b = tmpl(q, width=size, height=0.7 * size)
         T = pose @ translation(0, lo + (hi - lo) * (i + 0.5) / n, 0)
         parent.add(button_bezel(q.scope("bezel"), b, gap=0.0006), T)
         mount_button(ctx.builder, parent, b, T)
@@ -144,12 +150,14 @@ def racks(ctx):
         q = p.scope(f"rack{i}")
         rack = (cutlery_tray if i == 2 else wire_rack)(q, dr, wr, hs[i] * scale)
         ctx.templates.setdefault(ctx.slot, []).append(rack.template)
-        root.add(Part("body", "rails", [cuboid_between((x0, s * yi - (0.012 if s > 0 else 0), z - 0.01),
-                                                       (x1, s * yi + (0.012 if s < 0 else 0), z), role="rail") for s in (-1, 1)]))
+        rails = [cuboid_between((x0, s * yi - (0.012 if s > 0 else 0), z - 0.01), (x1, s * yi + (0.012 if s < 0 else 0), z),
+                                role="rail") for s in (-1, 1)]
+        root.add(Part("body", "rails", rails))
         link = mount_sliding(ctx.builder, root, rack, origin=translation(xc, 0, z), name="tray",
                              limits=(0.0, q.uniform("travel", 0.55, 0.8) * dr))
         if i == 1:  # upper spray arm, fed by a tube under the middle rack
-            link.add(Part("tray", "feed_tube", [cuboid_between((0.0, -0.012, -0.015), (dr / 2, 0.012, 0.0), role="tube")]))
+            feed = cuboid_between((0.0, -0.012, -0.015), (dr / 2, 0.012, 0.0), role="tube")
+            link.add(Part("tray", "feed_tube", [feed]))
             up = ctx.builder.create_link("arm", link)
             up.set_joint("continuous", translation(0, 0, -0.015 - sh))
             up.add(spray_arm(p.scope("spray1"), R, sh))

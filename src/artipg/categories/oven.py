@@ -52,7 +52,41 @@ def _rise(h, t):
 def _rack(p, root, x0, x1, y0, y1, z):
     """Flat oven rack resting on two side runners at height z."""
     root.add(oven_rack(p, x1 - x0 - 0.03, y1 - y0 - 0.004), translation((x0 + x1) / 2 + 0.01, (y0 + y1) / 2, z))
-    root.add(Part("body", "runners", [cuboid_between((x0 + 0.02, y, z - 0.008), (x1, y + 0.01, z)) for y in (y0, y1 - 0.01)]))
+    runners = [cuboid_between((x0 + 0.02, y, z - 0.008), (x1, y + 0.01, z)) for y in (y0, y1 - 0.01)]
+    root.add(Part("body", "runners", runners))
+
+
+def _countertop(ctx, root, W, H, D):
+    """Housing on feet, cavity on the left, control bay (a column of knobs) on the right."""
+    p = ctx.p
+    zf, bay, gap = p.uniform("feet", 0.01, 0.025), p.uniform("bay", 0.09, 0.14), 0.003
+    root.add(bun_feet(p.scope("feet"), 0.9 * D, 0.9 * W, zf))
+    hs = appliance_housing(p, D, W, H - zf, bay, "-y")
+    root.add(hs, translation(0, 0, (H + zf) / 2))
+    lo, hi = hs.anchor("cavity_lo"), hs.anchor("cavity_hi")
+    z = (H + zf) / 2 + 0.3 * (hi[2] - lo[2]) * p.uniform("rack_z", -1, 0)
+    _rack(p.scope("rack0"), root, lo[0], hi[0], lo[1], hi[1], z)
+    y0 = -W / 2 + bay
+    cp = control_panel(p.scope("bay"), bay - gap, H - zf, p.uniform("panel_thickness", 0.008, 0.015))
+    pose = translation(-D / 2, y0 - bay / 2 - gap / 2, (H + zf) / 2)
+    root.add(cp, pose)
+    return {"t": p.uniform("door_thickness", 0.02, 0.03), "doors": [(y0 + gap, W / 2, zf, H)],
+            "panel": ("column", pose @ translation(*cp.anchor("front")), bay - gap, H - zf, 0)}
+
+
+def _cooktop(ctx, root, W, H, D):
+    """Cooktop plate (and backguard) on a range; returns the body's top and the lid spec."""
+    p = ctx.p
+    n = p.choice("burners", (5, 6)) if W > 0.75 else 4
+    cook = ctx.choose("cooktop", COOKTOPS)(p.scope("cooktop"), D, W, n)
+    zb = H - cook.anchor("surface")[2]
+    root.add(cook, translation(0, 0, zb))
+    if not p.flag("backguard", 0.6):
+        return zb, n, None
+    bt, bh = p.uniform("backguard_depth", 0.02, 0.04), p.uniform("backguard_height", 0.06, 0.2)
+    guard = cuboid_between((D / 2 - bt, -W / 2, H), (D / 2, W / 2, H + bh), role="panel")
+    root.add(Part("panel", "backguard", [guard]))
+    return zb, n, (D / 2 - bt, H + cook.anchor("top")[2] - cook.anchor("surface")[2] + 0.004)
 
 
 def body(ctx):
@@ -61,82 +95,64 @@ def body(ctx):
     W, H, D = p.uniform("width", *w), p.uniform("height", *h), p.uniform("depth", *d)
     root = ctx.builder.create_link("base")
     if ctx.sub == "countertop":
-        t, zf, bay, gap = p.uniform("door_thickness", 0.02, 0.03), p.uniform("feet", 0.01, 0.025), p.uniform("bay", 0.09, 0.14), 0.003
-        root.add(bun_feet(p.scope("feet"), 0.9 * D, 0.9 * W, zf))
-        hs = appliance_housing(p, D, W, H - zf, bay, "-y")
-        root.add(hs, translation(0, 0, (H + zf) / 2))
-        lo, hi = hs.anchor("cavity_lo"), hs.anchor("cavity_hi")
-        _rack(p.scope("rack0"), root, lo[0], hi[0], lo[1], hi[1], (H + zf) / 2 + 0.3 * (hi[2] - lo[2]) * p.uniform("rack_z", -1, 0))
-        y0 = -W / 2 + bay
-        cp = control_panel(p.scope("bay"), bay - gap, H - zf, p.uniform("panel_thickness", 0.008, 0.015))
-        pose = translation(-D / 2, y0 - bay / 2 - gap / 2, (H + zf) / 2)
-        root.add(cp, pose)
-        return root, W, D, t, [(y0 + gap, W / 2, zf, H)], None, ("column", pose @ translation(*cp.anchor("front")), bay - gap, H - zf, 0)
+        return {"root": root, "W": W, "D": D, "drawer": None, "lid": None, **_countertop(ctx, root, W, H, D)}
     t = p.uniform("door_thickness", 0.04, 0.06)
     zk = p.uniform("kick", 0.03, 0.08) if ctx.sub == "range" else 0.0
-    zb, n, ctx_lid = H, 0, None
     if zk:
         root.add(plinth(p.scope("plinth"), D, W, zk))
-    if ctx.sub == "range":
-        n = p.choice("burners", (5, 6)) if W > 0.75 else 4
-        cook = ctx.choose("cooktop", COOKTOPS)(p.scope("cooktop"), D, W, n)
-        zb = H - cook.anchor("surface")[2]
-        root.add(cook, translation(0, 0, zb))
-        if p.flag("backguard", 0.6):
-            bt, bh = p.uniform("backguard_depth", 0.02, 0.04), p.uniform("backguard_height", 0.06, 0.2)
-            root.add(Part("panel", "backguard", [cuboid_between((D / 2 - bt, -W / 2, H), (D / 2, W / 2, H + bh), role="panel")]))
-            ctx_lid = (D / 2 - bt, H + cook.anchor("top")[2] - cook.anchor("surface")[2] + 0.004, bh)
+    zb, n, lid = _cooktop(ctx, root, W, H, D) if ctx.sub == "range" else (H, 0, None)
     box = carcass(p, D, W, zb - zk)
     root.add(box, translation(0, 0, (zb + zk) / 2))
     wall = box.primitives[1].params[1]
     cs, tc = p.uniform("strip", 0.07, 0.11), p.uniform("strip_thickness", 0.01, 0.02)
-    cp = control_panel(p.scope("strip"), W, cs, tc)
-    root.add(cp, translation(-D / 2, 0, zb - cs / 2))
-    top = zb - cs
-    drawer = None
+    root.add(control_panel(p.scope("strip"), W, cs, tc), translation(-D / 2, 0, zb - cs / 2))
+    top, drawer = zb - cs, None
     if ctx.sub == "range" and p.flag("drawer", 0.6):
         zd = zk + p.uniform("drawer_height", 0.1, 0.16)
-        drawer = (zk, zd - 0.003, zk + wall, zd - wall)
-        bottoms = [zd]
+        drawer, bottoms = (zk, zd - 0.003, zk + wall, zd - wall), [zd]
     elif ctx.sub == "double_oven":
         hl = (top - zk) * p.uniform("split", 0.48, 0.55)
         bottoms = [zk, zk + hl + _rise(hl, t)]
     else:
         bottoms = [zk]
-    doors, x0, x1 = [], -D / 2, D / 2 - box.primitives[0].params[0]
-    for i, b in enumerate(bottoms):
-        z1 = (bottoms[i + 1] if i + 1 < len(bottoms) else top)
+    doors, x0, x1, yi = [], -D / 2, D / 2 - box.primitives[0].params[0], W / 2 - wall
+    for i, b in enumerate(bottoms):  # one cavity per door, closed by divider boards
+        z1 = bottoms[i + 1] if i + 1 < len(bottoms) else top
         z1 -= _rise(z1 - b, t)
         doors.append((-W / 2 + 0.002, W / 2 - 0.002, b, z1))
-        root.add(Part("body", "divider", [cuboid_between((x0, -W / 2 + wall, z1 - wall / 2), (x1, W / 2 - wall, z1))]))
+        root.add(Part("body", "divider", [cuboid_between((x0, -yi, z1 - wall / 2), (x1, yi, z1))]))
         if b > zk:
-            root.add(Part("body", "divider", [cuboid_between((x0, -W / 2 + wall, b - wall), (x1, W / 2 - wall, b))]))
-        _rack(p.scope(f"rack{i}"), root, x0, x1, -W / 2 + wall, W / 2 - wall, b + (z1 - b) * p.uniform(f"rack_z{i}", 0.3, 0.55))
-    return root, W, D, t, doors, drawer, ("row", translation(-D / 2 - tc, 0, zb - cs / 2), W, cs, n), ctx_lid
+            root.add(Part("body", "divider", [cuboid_between((x0, -yi, b - wall), (x1, yi, b))]))
+        _rack(p.scope(f"rack{i}"), root, x0, x1, -yi, yi, b + (z1 - b) * p.uniform(f"rack_z{i}", 0.3, 0.55))
+    return {"root": root, "W": W, "D": D, "t": t, "doors": doors, "drawer": drawer, "lid": lid,
+            "panel": ("row", translation(-D / 2 - tc, 0, zb - cs / 2), W, cs, n)}
 
 
 def fronts(ctx):
-    root, W, D, t, doors, drawer, panel, *lid = ctx.out["body"]
+    b = ctx.out["body"]
+    root, W, D, t, doors = b["root"], b["W"], b["D"], b["t"], b["doors"]
     p = ctx.p
     tmpl, handle = ctx.choose("door", DOORS), ctx.choose("handle", HANDLES)
     m = p.uniform("handle_margin", 0.03, 0.05)
     for i, outer in enumerate(doors):
-        add_door(ctx, root, p.scope(f"door{i}"), front_x=-D / 2, outer=outer, side="-z", limits=(0.0, p.uniform(f"limit{i}", 1.45, 1.57)),
-                 template=tmpl, handle=handle, thickness=t, handle_length=min(0.6, 0.7 * (outer[1] - outer[0])), margin=m)
-    if drawer is not None:  # the drawer's handle must stay short of the opened door's handle
-        h = doors[0][3] - doors[0][2]
-        f = min(0.8, (t + h - m - 0.12) / (D - 0.1))
-        add_drawer(ctx, root, p.scope("drawer"), front_x=-D / 2, outer=(-W / 2 + 0.002, W / 2 - 0.002, *drawer[:2]),
-                   inner=(-W / 2 + 0.03, W / 2 - 0.03, *drawer[2:]), depth=D - 0.1, template=box_drawer, handle=handle,
+        add_door(ctx, root, p.scope(f"door{i}"), front_x=-D / 2, outer=outer, side="-z", template=tmpl, handle=handle,
+                 limits=(0.0, p.uniform(f"limit{i}", 1.45, 1.57)), thickness=t, margin=m,
+                 handle_length=min(0.6, 0.7 * (outer[1] - outer[0])))
+    if b["drawer"] is not None:  # the drawer's handle must stay short of the opened door's handle
+        z0, z1, iz0, iz1 = b["drawer"]
+        f = min(0.8, (t + doors[0][3] - doors[0][2] - m - 0.12) / (D - 0.1))
+        add_drawer(ctx, root, p.scope("drawer"), front_x=-D / 2, outer=(-W / 2 + 0.002, W / 2 - 0.002, z0, z1),
+                   inner=(-W / 2 + 0.03, W / 2 - 0.03, iz0, iz1), depth=D - 0.1, template=box_drawer, handle=handle,
                    travel=(0.6 * f, f), handle_z=0.2)
-    _controls(ctx, root, panel)
-    if lid and lid[0] is not None and p.flag("lid", 0.4):
-        xb, zl, _ = lid[0]
+    _controls(ctx, root, b["panel"])
+    if b["lid"] is not None and p.flag("lid", 0.4):  # glass cover hinged on the backguard
+        xb, zl = b["lid"]
         tl = p.uniform("lid_thickness", 0.006, 0.01)
         link = ctx.builder.create_link("lid", root)
-        link.set_joint("revolute", translation(xb, 0, zl + tl), axis=(0, 1, 0), limits=(0.0, p.uniform("lid_limit", 1.3, 1.5)))
-        link.add(Part("lid", "glass_lid", [cuboid_between((-(xb + D / 2 - 0.005), -W / 2 + 0.005, -tl), (0.0, W / 2 - 0.005, 0.0), role="glass")],
-                      regions={"lift": Region(("glass",))}, actionable="hinge_lid"))
+        link.set_joint("revolute", translation(xb, 0, zl + tl), axis=(0, 1, 0),
+                       limits=(0.0, p.uniform("lid_limit", 1.3, 1.5)))
+        glass = cuboid_between((-(xb + D / 2 - 0.005), -W / 2 + 0.005, -tl), (0.0, W / 2 - 0.005, 0.0), role="glass")
+        link.add(Part("lid", "glass_lid", [glass], regions={"lift": Region(("glass",))}, actionable="hinge_lid"))
 
 
 def _controls(ctx, root, panel):

@@ -67,17 +67,20 @@ def body(ctx):
 
 
 def _shelves(p, root, D, inner, depth, bins):
+    """1-4 glass shelves across a compartment, behind the door bins' reach."""
     y0, y1, z0, z1 = inner
     n = p.integers("count", 1, max(1, min(4, int((z1 - z0) / 0.28))))
     for i in range(n):
         z = z0 + (z1 - z0) * (i + 1) / (n + 1)
-        root.add(Part("shelf", "glass_shelf", [cuboid_between((-D / 2 + bins + 0.02, y0, z), (depth, y1, z + 0.006), role="glass")]))
+        glass = cuboid_between((-D / 2 + bins + 0.02, y0, z), (depth, y1, z + 0.006), role="glass")
+        root.add(Part("shelf", "glass_shelf", [glass]))
 
 
 def _door(ctx, root, q, outer, side, inner, obstacle, dims, tmpl, handle, limit):
     """A door on ``outer`` with bins inside; ``obstacle``: distance from its hinge to the
-    nearest thing across its free edge (mullion, other door, far wall)."""
-    W, H, D, zp, wall, t, b = dims
+    nearest thing across its free edge (mullion, other door, far wall). A bin corner at
+    distance R from the hinge swings through |y| <= R, so the bins end where R reaches it."""
+    D, t, b = dims
     link = add_door(ctx, root, q, front_x=-D / 2, outer=outer, side=side, limits=(0.0, limit), template=tmpl,
                     handle=handle, thickness=t, handle_length=min(0.8, 0.45 * (outer[3] - outer[2])),
                     margin=q.uniform("handle_margin", 0.04, 0.07))
@@ -89,56 +92,60 @@ def _door(ctx, root, q, outer, side, inner, obstacle, dims, tmpl, handle, limit)
     ya, yb = max(ya, inner[0] + 0.01), min(yb, inner[1] - 0.01)
     if yb - ya > 0.1 and inner[3] - inner[2] > 0.2 and door.template != "glass_door":  # no bins on glass doors
         n = q.integers("bins", 1, max(1, min(4, int((inner[3] - inner[2]) / 0.3))))
-        link.add(door_bins(q.scope("bins"), ya - cy, yb - cy, inner[2] + 0.01 - cz, inner[3] - 0.01 - cz, b, n), door.pose)
+        bins = door_bins(q.scope("bins"), ya - cy, yb - cy, inner[2] + 0.01 - cz, inner[3] - 0.01 - cz, b, n)
+        link.add(bins, door.pose)
     return link, door
+
+
+def _drawers(ctx, root, q, inner, z0, z1, W, D, t, handle):
+    """1-2 stacked freezer drawers over the compartment's front (z0..z1)."""
+    n = q.integers("drawers", 1, 2 if z1 - z0 > 0.5 else 1)
+    zb = [z0 + (z1 - z0) * i / n for i in range(n + 1)]
+    for i in range(n):
+        oz = (zb[i] + (GAP / 2 if i else 0), zb[i + 1] - GAP / 2)
+        iz = (max(inner[2], oz[0]) + 0.005, min(inner[3], oz[1]) - 0.005)
+        add_drawer(ctx, root, q.scope(f"drawer{i}"), front_x=-D / 2, outer=(-W / 2, W / 2, *oz), inner=(*inner[:2], *iz),
+                   depth=D - 0.12, template=box_drawer, handle=handle, handle_z=0.35, thickness=t)
 
 
 def fronts(ctx):
     root, (W, H, D, zp, wall, layout), comps = ctx.out["body"]
     p = ctx.p
     t, b = p.uniform("door_thickness", 0.045, 0.07), p.uniform("bin_depth", 0.07, 0.12)
-    dims = (W, H, D, zp, wall, t, b)
     tmpl = ctx.choose("door", BEVERAGE_DOORS if layout == "single" else DOORS)
     handle = ctx.choose("handle", HANDLES)
     limit = p.uniform("door_limit", 1.6, 2.1)
     hinge = p.choice("hinge", ("+y", "-y"))
     wn = min(W / 2 - comps[-1][0][0], comps[0][0][1] + W / 2) if layout == "side" else W / 2
     gc = max(GAP, math.hypot(wn, t) - wn + 0.002)  # the free corner of a door swings past its edge
-    doors = []
+    plan = []  # (recorder, outer, hinge side, obstacle distance, compartment)
     for k, (inner, (z0, z1)) in enumerate(comps):
         q = p.scope(f"c{k}")
-        drawers = layout in ("bottom", "french") and k == 0
-        if drawers:
-            n = q.integers("drawers", 1, 2 if z1 - z0 > 0.5 else 1)
-            zb = [z0 + (z1 - z0) * i / n for i in range(n + 1)]
-            for i in range(n):
-                oz = (zb[i] + (GAP / 2 if i else 0), zb[i + 1] - GAP / 2)
-                iz = (max(inner[2], oz[0]) + 0.005, min(inner[3], oz[1]) - 0.005)
-                add_drawer(ctx, root, q.scope(f"drawer{i}"), front_x=-D / 2, outer=(-W / 2, W / 2, *oz), inner=(*inner[:2], *iz),
-                           depth=D - 0.12, template=box_drawer, handle=handle, handle_z=0.35, thickness=t)
+        if layout in ("bottom", "french") and k == 0:
+            _drawers(ctx, root, q, inner, z0, z1, W, D, t, handle)
             continue
         zs = (z0 + (GAP / 2 if k else 0), z1 - (GAP / 2 if k < len(comps) - 1 else 0))
-        if layout == "side":
+        if layout == "side":  # right (-y) fridge door, left (+y) freezer door, split at the mullion
             ys = inner[1] + wall / 2 if k == 0 else inner[0] - wall / 2
             outer = (-W / 2, ys - gc / 2, *zs) if k == 0 else (ys + gc / 2, W / 2, *zs)
-            side = "-y" if k == 0 else "+y"
-            doors.append(_door(ctx, root, q, outer, side, inner, abs((inner[1] if k == 0 else inner[0]) - outer[0 if k == 0 else 1]),
-                               dims, tmpl, handle, limit))
+            face = inner[1] - outer[0] if k == 0 else outer[1] - inner[0]
+            plan.append((q, outer, "-y" if k == 0 else "+y", face, inner))
         elif layout == "french" and k == 1:
-            for i, side in enumerate(("-y", "+y")):
-                outer = (-W / 2, -gc / 2, *zs) if i == 0 else (gc / 2, W / 2, *zs)
-                doors.append(_door(ctx, root, q.scope(f"door{i}"), outer, side, inner, W / 2 + gc / 2, dims, tmpl, handle, limit))
+            plan += [(q.scope("door0"), (-W / 2, -gc / 2, *zs), "-y", W / 2 + gc / 2, inner),
+                     (q.scope("door1"), (gc / 2, W / 2, *zs), "+y", W / 2 + gc / 2, inner)]
         else:
-            doors.append(_door(ctx, root, q, (-W / 2, W / 2, *zs), hinge, inner, W - wall, dims, tmpl, handle, limit))
+            plan.append((q, (-W / 2, W / 2, *zs), hinge, W - wall, inner))
         _shelves(q.scope("shelves"), root, D, inner, D / 2 - 0.05, b)
-    for s in {o for o in ("-y", "+y") if any(lk.link.joint.axis[2] == (1.0 if o == "-y" else -1.0) for lk, _ in doors)}:
-        y = W / 2 - 0.05 if s == "+y" else -W / 2
+    doors = [_door(ctx, root, q, outer, side, inner, obst, (D, t, b), tmpl, handle, limit)
+             for q, outer, side, obst, inner in plan]
+    for side in sorted({s for _, _, s, _, _ in plan}):  # hinge covers on the top
+        y = W / 2 - 0.05 if side == "+y" else -W / 2
         root.add(Part("hinge", "hinge_cover", [cuboid_between((-D / 2 - t, y, H), (-D / 2 + 0.05, y + 0.05, H + 0.012))]))
     if layout in ("side", "french") and p.flag("dispenser", 0.6):
-        _dispenser(ctx, p.scope("dispenser"), *doors[-1], t, zp)
+        _dispenser(ctx, p.scope("dispenser"), *doors[-1], t)
 
 
-def _dispenser(ctx, q, link, door, t, zp):
+def _dispenser(ctx, q, link, door, t):
     """Recessed dispenser panel with a push paddle (revolute about -y) on ``door``."""
     w = 2 * door.anchors["edge_+y"][1]
     pw = min(q.uniform("width", 0.16, 0.22), w - 0.2)
@@ -148,14 +155,16 @@ def _dispenser(ctx, q, link, door, t, zp):
     link.add(Part("panel", "dispenser", [cuboid_between((-t - pt, -pw / 2, z - ph), (-0.002, pw / 2, z), role="panel"),
                                          cuboid_between((-t - pt - d - 0.012, -pw / 4, z - 0.04), (-t - pt, pw / 4, z))]), P)
     L = q.uniform("paddle", 0.08, 0.12)
-    pad = ctx.builder.create_link("lever", link)
-    pad.set_joint("revolute", P @ translation(-t - pt - d, 0, z - 0.04), axis=(0, -1, 0), limits=(0.0, math.asin((d - 0.006) / L)))
+    pad = ctx.builder.create_link("lever", link)  # the paddle's lower end swings in, short of the panel
+    pad.set_joint("revolute", P @ translation(-t - pt - d, 0, z - 0.04), axis=(0, -1, 0),
+                  limits=(0.0, math.asin((d - 0.006) / L)))
     pad.add(Part("lever", "paddle", [cuboid_between((-0.01, -pw / 5, -L), (0.0, pw / 5, 0.0), role="paddle")],
                  regions={"push": Region(("paddle",))}))
 
 
 RULE = Category(
     name="refrigerator",
-    subcategories={"top_freezer": 2.0, "bottom_freezer": 2.0, "side_by_side": 1.5, "french_door": 1.5, "single_door": 1.0},
+    subcategories={"top_freezer": 2.0, "bottom_freezer": 2.0, "side_by_side": 1.5, "french_door": 1.5,
+                   "single_door": 1.0},
     slots=(Slot("body", body), Slot("fronts", fronts, after=("body",))),
 )

@@ -118,7 +118,8 @@ def _centre(ctx, root, zu, ax, half, yc, handle, drawer):
     part = apron(p, 2 * ax, 2 * half, ah, [(-half + st, half - st)], (z0, z1))
     pose = translation(0, yc, zu)
     root.add(part, pose)
-    add_drawer(ctx, root, p.scope("drawer"), front_x=-ax, outer=(-half + st - 0.01, half - st + 0.01, z0 - 0.005, z1 - GAP),
+    add_drawer(ctx, root, p.scope("drawer"), front_x=-ax,
+               outer=(-half + st - 0.01, half - st + 0.01, z0 - 0.005, z1 - GAP),
                inner=(-half + st, half - st, z0, z1), depth=2 * ax - 0.04, template=drawer, handle=handle,
                parent_pose=pose)
 
@@ -141,7 +142,8 @@ def base(ctx):
         if ctx.sub in ("coffee", "side") and p.flag("shelf", 0.5):
             cx, cy = -(b[0][0] + b[1][0]) / 2, -(b[0][1] + b[1][1]) / 2
             zs, ts = p.uniform("shelf_z", 0.08, 0.2), p.uniform("shelf_thickness", 0.015, 0.025)
-            rails = [cuboid_between((-cx, s * cy - 0.01, zs - 0.03), (cx, s * cy + 0.01, zs), role="rail") for s in (-1, 1)]
+            rails = [cuboid_between((-cx, s * cy - 0.01, zs - 0.03), (cx, s * cy + 0.01, zs), role="rail")
+                     for s in (-1, 1)]
             shelf = cuboid_between((b[1][0], -cy, zs), (-b[1][0], cy, zs + ts), role="board")
             root.add(Part("shelf", "lower_shelf", rails + [shelf]))
     elif kind == "pedestal":

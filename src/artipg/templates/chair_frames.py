@@ -54,8 +54,9 @@ def column_stool_base(p, top: float, gas: bool = False) -> Part:
 
 
 def leg_stool_frame(p, legs: Part, footprint: float, top: float) -> Part:
-    """Top plate and a ring of rungs for four stool ``legs`` (a supports template part)."""
-    tp = p.uniform("plate", 0.02, 0.03)
+    """Top plate (down to the legs' tops) and a ring of rungs for four stool ``legs``
+    (a supports template part)."""
+    tp = top - float(legs.bounds()[1][2])
     b = legs.primitives[0].bounds()
     c, zr = -(b[0] + b[1]) / 2, p.uniform("rung_z", 0.22, 0.32)
     prims = [_box((-c[0], s * c[1] - 0.01, zr), (c[0], s * c[1] + 0.01, zr + 0.02), "rung") for s in (-1, 1)]
