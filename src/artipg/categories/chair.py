@@ -117,7 +117,8 @@ def _office_arms(ctx, link, p, mw, sw, top, x_max):
             link.add(Part("armrest", "post_arm", prims + [_box((*post[0], 0.0), (*post[1], top + ha - pt)), pad]))
             continue
         zs = top + 0.02  # sleeve top
-        sleeve = rect_ring(pw, pw, zs - 0.015, pw - 0.006, pw - 0.006, translation(xa, yo, (zs + 0.015) / 2), role="sleeve")
+        sleeve = rect_ring(pw, pw, zs - 0.015, pw - 0.006, pw - 0.006, translation(xa, yo, (zs + 0.015) / 2),
+                           role="sleeve")
         link.add(Part("armrest", "arm_sleeve", prims + [sleeve]))
         up = ctx.builder.create_link("armrest", link)
         up.set_joint("prismatic", translation(xa, yo, 0), axis=(0, 0, 1), limits=(0.0, travel))

@@ -81,8 +81,9 @@ def door(ctx):
         margin = cs + p.uniform("handle_gap", 0.03, 0.045)
     else:
         margin = p.uniform("handle_margin", 0.035, 0.06)
-    link = add_door(ctx, root, p.scope("door"), front_x=-D / 2, outer=(-W / 2 + 0.002, W / 2 - 0.002, zf, top), side="-z",
-                    limits=(0.0, math.pi / 2), template=tmpl, handle=ctx.choose("handle", HANDLES), thickness=t,
+    link = add_door(ctx, root, p.scope("door"), front_x=-D / 2, outer=(-W / 2 + 0.002, W / 2 - 0.002, zf, top),
+                    side="-z", limits=(0.0, math.pi / 2), template=tmpl, handle=ctx.choose("handle", HANDLES),
+                    thickness=t,
                     handle_length=min(0.45, 0.7 * W), margin=margin)
     dp = link.link.parts[0]
     hd = (top - zf) / 2
@@ -150,7 +151,7 @@ def racks(ctx):
         q = p.scope(f"rack{i}")
         rack = (cutlery_tray if i == 2 else wire_rack)(q, dr, wr, hs[i] * scale)
         ctx.templates.setdefault(ctx.slot, []).append(rack.template)
-        rails = [cuboid_between((x0, s * yi - (0.012 if s > 0 else 0), z - 0.01), (x1, s * yi + (0.012 if s < 0 else 0), z),
+        rails = [cuboid_between((x0, min(s * yi, s * (yi - 0.012)), z - 0.01), (x1, max(s * yi, s * (yi - 0.012)), z),
                                 role="rail") for s in (-1, 1)]
         root.add(Part("body", "rails", rails))
         link = mount_sliding(ctx.builder, root, rack, origin=translation(xc, 0, z), name="tray",

@@ -104,8 +104,9 @@ def _drawers(ctx, root, q, inner, z0, z1, W, D, t, handle):
     for i in range(n):
         oz = (zb[i] + (GAP / 2 if i else 0), zb[i + 1] - GAP / 2)
         iz = (max(inner[2], oz[0]) + 0.005, min(inner[3], oz[1]) - 0.005)
-        add_drawer(ctx, root, q.scope(f"drawer{i}"), front_x=-D / 2, outer=(-W / 2, W / 2, *oz), inner=(*inner[:2], *iz),
-                   depth=D - 0.12, template=box_drawer, handle=handle, handle_z=0.35, thickness=t)
+        add_drawer(ctx, root, q.scope(f"drawer{i}"), front_x=-D / 2, outer=(-W / 2, W / 2, *oz),
+                   inner=(*inner[:2], *iz), depth=D - 0.12, template=box_drawer, handle=handle, handle_z=0.35,
+                   thickness=t)
 
 
 def fronts(ctx):
@@ -140,7 +141,8 @@ def fronts(ctx):
              for q, outer, side, obst, inner in plan]
     for side in sorted({s for _, _, s, _, _ in plan}):  # hinge covers on the top
         y = W / 2 - 0.05 if side == "+y" else -W / 2
-        root.add(Part("hinge", "hinge_cover", [cuboid_between((-D / 2 - t, y, H), (-D / 2 + 0.05, y + 0.05, H + 0.012))]))
+        cover = cuboid_between((-D / 2 - t, y, H), (-D / 2 + 0.05, y + 0.05, H + 0.012))
+        root.add(Part("hinge", "hinge_cover", [cover]))
     if layout in ("side", "french") and p.flag("dispenser", 0.6):
         _dispenser(ctx, p.scope("dispenser"), *doors[-1], t)
 
@@ -152,8 +154,9 @@ def _dispenser(ctx, q, link, door, t):
     ph, pt, d = q.uniform("height", 0.22, 0.32), 0.012, q.uniform("reach", 0.03, 0.05)
     z = q.uniform("z", 1.0, 1.2) - link.link.joint.origin[2, 3] - door.pose[2, 3]
     P = door.pose
-    link.add(Part("panel", "dispenser", [cuboid_between((-t - pt, -pw / 2, z - ph), (-0.002, pw / 2, z), role="panel"),
-                                         cuboid_between((-t - pt - d - 0.012, -pw / 4, z - 0.04), (-t - pt, pw / 4, z))]), P)
+    recess = cuboid_between((-t - pt, -pw / 2, z - ph), (-0.002, pw / 2, z), role="panel")
+    hood = cuboid_between((-t - pt - d - 0.012, -pw / 4, z - 0.04), (-t - pt, pw / 4, z))
+    link.add(Part("panel", "dispenser", [recess, hood]), P)
     L = q.uniform("paddle", 0.08, 0.12)
     pad = ctx.builder.create_link("lever", link)  # the paddle's lower end swings in, short of the panel
     pad.set_joint("revolute", P @ translation(-t - pt - d, 0, z - 0.04), axis=(0, -1, 0),

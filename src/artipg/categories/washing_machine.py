@@ -64,7 +64,8 @@ def body(ctx):
     hole = R * p.uniform("hole", 0.72, 0.82)
     root.add(porthole_panel(p.scope("porthole"), W, 2 * hp, hole, tp), translation(-D / 2, 0, cz))
     gd, ro = p.uniform("gasket_depth", 0.04, 0.07), hole - p.uniform("gasket", 0.02, 0.035)
-    root.add(Part("body", "gasket", [ring(hole, ro, gd, pose=translation(-D / 2 - tp + gd / 2, 0, cz) @ _ALONG_X, role="gasket")]))
+    gasket = ring(hole, ro, gd, pose=translation(-D / 2 - tp + gd / 2, 0, cz) @ _ALONG_X, role="gasket")
+    root.add(Part("body", "gasket", [gasket]))
     rdr = min(W / 2 - wall, cz - zk - wall, zs - cz) - 0.012
     x0, axle = -D / 2 - tp + gd + 0.005, 0.03
     dl = ctx.builder.create_link("drum", root)
@@ -80,9 +81,10 @@ def _top_body(ctx, root, W, H, D, zk):
     cd, ch = p.uniform("console_depth", 0.08, 0.14), p.uniform("console_height", 0.1, 0.2)
     xf, xb = -D / 2 + wall, D / 2 - cd
     xh = xb - 0.05  # lid hinge line, clear of the console's knobs
-    prims = [_box((-D / 2, -W / 2, zk), (D / 2, W / 2, zk + wall)), _box((-D / 2, -W / 2, zk), (D / 2, -W / 2 + wall, H)),
-             _box((-D / 2, W / 2 - wall, zk), (D / 2, W / 2, H)), _box((-D / 2, -W / 2, zk), (-D / 2 + wall, W / 2, H)),
-             _box((D / 2 - wall, -W / 2, zk), (D / 2, W / 2, H)), _box((xb, -W / 2, H), (D / 2, W / 2, H + ch), "console")]
+    prims = [_box((-D / 2, -W / 2, zk), (D / 2, W / 2, zk + wall)),
+             _box((-D / 2, -W / 2, zk), (D / 2, -W / 2 + wall, H)), _box((-D / 2, W / 2 - wall, zk), (D / 2, W / 2, H)),
+             _box((-D / 2, -W / 2, zk), (-D / 2 + wall, W / 2, H)), _box((D / 2 - wall, -W / 2, zk), (D / 2, W / 2, H)),
+             _box((xb, -W / 2, H), (D / 2, W / 2, H + ch), "console")]
     twin = ctx.sub == "twin_tub"
     xc = (xf + xh) / 2
     if twin:
@@ -97,7 +99,8 @@ def _top_body(ctx, root, W, H, D, zk):
         a = R * p.uniform(f"hole{i}", 0.75, 0.88)
         holes.append((yc, R, a, min(half + wall - 0.003, r_lim + 0.015) - a))
         edges += [yc - a, yc + a]
-        prims += [_box((xf, yc - a, H - tt), (xc - a, yc + a, H)), _box((xc + a, yc - a, H - tt), (D / 2 - wall, yc + a, H))]
+        prims += [_box((xf, yc - a, H - tt), (xc - a, yc + a, H)),  # top strips in front of and behind the hole
+                  _box((xc + a, yc - a, H - tt), (D / 2 - wall, yc + a, H))]
     edges = sorted(edges + [W / 2 - wall])
     prims += [_box((xf, y0, H - tt), (D / 2 - wall, y1, H)) for y0, y1 in zip(edges[::2], edges[1::2]) if y1 > y0]
     root.add(Part("body", "cabinet", prims))
@@ -106,8 +109,8 @@ def _top_body(ctx, root, W, H, D, zk):
         q = p.scope(f"tub{i}")
         hb = H - tt - 0.02 - zb
         if twin and i == 0:  # fixed wash tub with an impeller on its floor
-            root.add(Part("body", "tub", [ring(R, R - 0.004, hb - 0.03, pose=translation(xc, yc, zb + 0.03 + (hb - 0.03) / 2)),
-                                          cylinder(R, 0.03, translation(xc, yc, zb + 0.015), role="floor")]))
+            wall_ = ring(R, R - 0.004, hb - 0.03, pose=translation(xc, yc, zb + 0.03 + (hb - 0.03) / 2), role="wall")
+            root.add(Part("body", "tub", [wall_, cylinder(R, 0.03, translation(xc, yc, zb + 0.015), role="floor")]))
             imp = ctx.builder.create_link("arm", root)
             imp.set_joint("continuous", translation(xc, yc, zb + 0.03))
             imp.add(pulsator(q.scope("pulsator"), 0.5 * R, 0.03))
@@ -140,13 +143,15 @@ def fronts(ctx):
         return
     wall, tp, zs, cz, R, ro = rest
     t = p.uniform("door_thickness", 0.03, 0.05)
-    add_door(ctx, root, p.scope("door"), front_x=-D / 2 - tp, outer=(-R, R, cz - R, cz + R), side=p.choice("hinge", {"+y": 4, "-y": 1}),
-             limits=(0.0, p.uniform("door_limit", 1.6, 2.2)), template=ctx.choose("door", ROUND_DOORS), thickness=t,
-             handle=ctx.choose("handle", {edge_pull: 1.0, flat_bar_handle: 1.0}), handle_length=p.uniform("handle_length", 0.06, 0.1),
-             margin=t / 2, opening=ro)
+    handle = ctx.choose("handle", {edge_pull: 1.0, flat_bar_handle: 1.0})
+    add_door(ctx, root, p.scope("door"), front_x=-D / 2 - tp, outer=(-R, R, cz - R, cz + R),
+             side=p.choice("hinge", {"+y": 4, "-y": 1}), limits=(0.0, p.uniform("door_limit", 1.6, 2.2)),
+             template=ctx.choose("door", ROUND_DOORS), thickness=t, handle=handle, margin=t / 2, opening=ro,
+             handle_length=p.uniform("handle_length", 0.06, 0.1))  # the handle sits on the rim
     x = -D / 2 - tp
     y1 = W / 2 - 0.03
-    y0 = y1 - (p.uniform("drawer_width", 0.14, 0.2) if p.flag("drawer", 0.85 if ctx.sub == "front_loader" else 0.4) else 0.0)
+    has_drawer = p.flag("drawer", 0.85 if ctx.sub == "front_loader" else 0.4)
+    y0 = y1 - (p.uniform("drawer_width", 0.14, 0.2) if has_drawer else 0.0)
     z0, z1 = zs + 0.015, H - 0.015
     prims = [_box((x, -W / 2, zs), (x + tp, y0, H)), _box((x, y1, zs), (x + tp, W / 2, H))]
     if y1 > y0:
@@ -171,7 +176,8 @@ def _controls(ctx, root, pose, w, h, twin):
         return
     lo, hi = -w / 2 + 0.03, w / 2 - 0.08 - 2 * r
     if hi - lo > 0.15 and p.flag("display", 0.6):
-        root.add(Part("screen", "display", [cuboid_between((-0.002, hi - 0.3 * (hi - lo), -h / 4), (0.0, hi, h / 4), role="screen")]), pose)
+        screen = cuboid_between((-0.002, hi - 0.3 * (hi - lo), -h / 4), (0.0, hi, h / 4), role="screen")
+        root.add(Part("screen", "display", [screen]), pose)
         hi -= 0.3 * (hi - lo) + 0.02
     tmpl, k = ctx.choose("button", BUTTONS), p.integers("buttons", 1, max(1, min(5, int((hi - lo) / 0.036))))
     for i in range(k):

@@ -309,20 +309,27 @@ def _print_eval(label: str, res: dict, points: int, normalize: str, has_encoder:
 
 
 def _print_stats(cats: dict) -> None:
-    t = Table(title="object set statistics (Chamfer-L1 NND)", title_justify="left")
-    for col in ("category", "objects", "NND", "joints / object", "links / object", "height z (m)", "width y (m)",
-                "depth x (m)"):
-        t.add_column(col, justify="left" if col == "category" else "right")
+    width = max([len("category")] + [len(c) for c in cats])
+    t = Table(title="object set statistics (NND: Chamfer-L1)", title_justify="left")
+    t.add_column("category", min_width=width, no_wrap=True)
+    for col in ("objects", "NND", "joints / object", "links / object"):
+        t.add_column(col, justify="right")
     for cat, r in cats.items():
         s = r["structure"]
-        t.add_row(cat, str(r["n_objects"]), _fmt(r["nnd"], ".5f"), _mean_std(s["joints"]), _mean_std(s["links"]),
-                  _mean_std(s["size"]["height_z"], ".3f"), _mean_std(s["size"]["width_y"], ".3f"),
-                  _mean_std(s["size"]["depth_x"], ".3f"))
+        t.add_row(cat, str(r["n_objects"]), _fmt(r["nnd"], ".5f"), _mean_std(s["joints"]), _mean_std(s["links"]))
     console.print(t)
+    sz = Table(title="bounding-box size at rest (m)", title_justify="left")
+    sz.add_column("category", min_width=width, no_wrap=True)
+    for col in ("depth x", "width y", "height z", "diagonal"):
+        sz.add_column(col, justify="right")
+    for cat, r in cats.items():
+        s = r["structure"]["size"]
+        sz.add_row(cat, *(_mean_std(s[k], ".3f") for k in ("depth_x", "width_y", "height_z", "diagonal")))
+    console.print(sz)
     console.print(_histogram_table("movable joints per object (% of objects)",
                                    {c: r["structure"]["joints"]["histogram"] for c, r in cats.items()}))
     tt = Table(title="joints per object by type", title_justify="left")
-    tt.add_column("category")
+    tt.add_column("category", min_width=width, no_wrap=True)
     tt.add_column("joint types / object")
     for cat, r in cats.items():
         tt.add_row(cat, _types(r["structure"]["joint_types"]))

@@ -41,8 +41,8 @@ def column_stool_base(p, top: float, gas: bool = False) -> Part:
     rf = p.uniform("footrest_radius", 0.15, 0.2)
     prims = [frustum(rb, rb * p.uniform("dome", 0.6, 1.0), th, translation(0, 0, th / 2), role="foot"),
              torus(rf, 0.01, pose=translation(0, 0, zf), role="footrest")]
-    prims += [cuboid(rf - ro + 0.002, 0.012, 0.012, rot_z(2 * math.pi * i / 3) @ translation((rf + ro - 0.002) / 2, 0, zf),
-                     role="spoke") for i in range(3)]
+    spoke = translation((rf + ro - 0.002) / 2, 0, zf)  # from inside the column's wall to the ring
+    prims += [cuboid(rf - ro + 0.002, 0.012, 0.012, rot_z(2 * math.pi * i / 3) @ spoke, role="spoke") for i in range(3)]
     anchors = {"top": (0.0, 0.0, top)}
     if gas:  # the tube stops short of the seat: the piston shows above it
         zt = top - p.uniform("exposed", 0.04, 0.08)
@@ -72,8 +72,8 @@ def ring_back(p, radius: float, z0: float, z_seat: float) -> Part:
     zb = z_seat + p.uniform("gap", 0.1, 0.2)
     posts = [cylinder(0.01, zb - z0, rot_z(s * a / 3) @ translation(radius - t / 2, 0, (zb + z0) / 2), role="post")
              for s in (-1, 1)]
-    return Part("backrest", "ring_back", posts + [ring(radius, radius - t, h, a, rot_z(-a / 2) @ translation(0, 0, zb + h / 2),
-                                                       role="board")], regions={"push": Region(("board",))})
+    board = ring(radius, radius - t, h, a, rot_z(-a / 2) @ translation(0, 0, zb + h / 2), role="board")
+    return Part("backrest", "ring_back", posts + [board], regions={"push": Region(("board",))})
 
 
 def post_arms(p, depth: float, width: float, z: float, clear: float = 0.006) -> Part:
@@ -88,42 +88,41 @@ def post_arms(p, depth: float, width: float, z: float, clear: float = 0.006) -> 
     return Part("armrest", "post_arms", prims, regions={"push": Region(("pad",))})
 
 
-def folding_frame(p, seat_height: float, seat_depth: float, seat_width: float, tube: float, seat_thickness: float) -> Part:
+def folding_frame(p, seat_height: float, seat_depth: float, seat_width: float, tube_radius: float,
+                  seat_thickness: float) -> Part:
     """Two bent tubes (front legs rising into the back posts) joined by a back board,
     with flat hinge plates where the seat and the rear legs bear on them."""
-    hs, sw, rp, st = seat_height, seat_width, tube, seat_thickness
-    lo, up, hb = p.uniform("leg_angle", 0.45, 0.65), p.uniform("back_angle", 0.1, 0.25), p.uniform("back_top", 0.35, 0.45)
+    hs, sw, rp, st = seat_height, seat_width, tube_radius, seat_thickness
+    lo, up = p.uniform("leg_angle", 0.45, 0.65), p.uniform("back_angle", 0.1, 0.25)
+    hb = p.uniform("back_top", 0.35, 0.45)
     zb, rb = hs - st / 2, 0.05
     d = rb * math.tan((lo - up) / 2)
     fx = -zb * math.tan(lo)
     path = [line(zb / math.cos(lo) - d), arc(rb, lo - up), line((hb + st / 2) / math.cos(up) - d)]
-    prims = [pr for s in (-1, 1) for pr in tube_prims(rp, path, math.pi / 2 - lo, translation(fx, s * (sw / 2 + rp), 0))]
+    prims = [pr for s in (-1, 1) for pr in tube(rp, path, math.pi / 2 - lo, translation(fx, s * (sw / 2 + rp), 0),
+                                                  role="tube")]
     bh, tb = p.uniform("back_height", 0.12, 0.2), p.uniform("back_thickness", 0.01, 0.02)
     zc = hs + hb - 0.02 - bh / 2  # the board sits behind the tubes, clear of the flipped-up seat
-    prims.append(cuboid(tb, sw + 2 * rp, bh, translation((zc - zb) * math.tan(up) + 0.3 * rp + tb / 2, 0, zc) @ rot_y(up),
-                        role="board"))
+    xc = (zc - zb) * math.tan(up) + 0.3 * rp + tb / 2
+    prims.append(cuboid(tb, sw + 2 * rp, bh, translation(xc, 0, zc) @ rot_y(up), role="board"))
     f = p.uniform("pivot", 0.45, 0.7)
     q = (fx * (1 - f), zb * f)
     for s in (-1, 1):
-        prims += [_box((-0.025, min(s * sw / 2, s * (sw / 2 + rp)), zb - 0.02), (0.015, max(s * sw / 2, s * (sw / 2 + rp)), zb + 0.02),
-                       "hinge"),
+        prims += [_box((-0.025, min(s * sw / 2, s * (sw / 2 + rp)), zb - 0.02),
+                       (0.015, max(s * sw / 2, s * (sw / 2 + rp)), zb + 0.02), "hinge"),
                   _box((q[0] - 0.02, min(s * (sw / 2 + rp), s * (sw / 2 + 2 * rp)), q[1] - 0.02),
                        (q[0] + 0.02, max(s * (sw / 2 + rp), s * (sw / 2 + 2 * rp)), q[1] + 0.02), "hinge")]
     return Part("frame", "folding_frame", prims,
                 anchors={"seat_pivot": (0.0, 0.0, hs), "leg_pivot": (q[0], 0.0, q[1]), "front_foot": (fx, 0.0, 0.0)})
 
 
-def tube_prims(r, path, heading, pose):
-    """A bent tube (see :func:`artipg.geometry.tube`) with the role ``tube``."""
-    return tube(r, path, heading, pose, role="tube")
-
-
-def folding_rear_legs(p, foot, y: float, tube: float) -> Part:
+def folding_rear_legs(p, foot, y: float, tube_radius: float) -> Part:
     """Two square-tube legs from the pivot to ``foot`` = (dx, dz) at y = +-``y``, joined
     near the floor by a round crossbar."""
     u = np.asarray(foot, dtype=float)
     L, gc = float(np.hypot(*u)), p.uniform("crossbar", 0.75, 0.9)
     R = rot_y(math.atan2(u[0], u[1]))
-    prims = [cuboid(2 * tube, 2 * tube, L, translation(u[0] / 2, s * y, u[1] / 2) @ R, role="leg") for s in (-1, 1)]
-    prims.append(cylinder(0.9 * tube, 2 * y, translation(gc * u[0], 0, gc * u[1]) @ _ALONG_Y, role="crossbar"))
-    return Part("leg", "folding_rear_legs", prims, anchors={"crossbar": (gc * L, 0.9 * tube, 0.0)})
+    r = tube_radius
+    prims = [cuboid(2 * r, 2 * r, L, translation(u[0] / 2, s * y, u[1] / 2) @ R, role="leg") for s in (-1, 1)]
+    prims.append(cylinder(0.9 * r, 2 * y, translation(gc * u[0], 0, gc * u[1]) @ _ALONG_Y, role="crossbar"))
+    return Part("leg", "folding_rear_legs", prims, anchors={"crossbar": (gc * L, 0.9 * r, 0.0)})

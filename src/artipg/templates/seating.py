@@ -122,8 +122,8 @@ def slat_back(p, width: float, height: float, z0: float, lean: float = 0.0, spin
               for z in (z0, z0 + height - rail)]
     for i in range(n):
         yc = -width / 2 + (i + 0.5) * width / n
-        prims.append(cuboid_between((x + 0.2 * t, yc - sw / 2, z0 + rail), (x + 0.8 * t, yc + sw / 2, z0 + height - rail),
-                                    role="board"))
+        prims.append(cuboid_between((x + 0.2 * t, yc - sw / 2, z0 + rail),
+                                    (x + 0.8 * t, yc + sw / 2, z0 + height - rail), role="board"))
     return _back("slat_back", prims, lean, z0 + height)
 
 
@@ -134,8 +134,9 @@ def ladder_back(p, width: float, height: float, z0: float, lean: float = 0.0, sp
     n = p.integers("rails", 3, 5)
     rh = p.uniform("rail_height", 0.03, 0.06)
     prims, x = _carrier(p, width, z0, spine, t)
-    prims += [cuboid_between((x, sy * width / 2 - (s if sy > 0 else 0), z0), (x + t, sy * width / 2 + (s if sy < 0 else 0),
-                             z0 + height), role="board") for sy in (-1, 1)]
+    prims += [cuboid_between((x, min(sy * width / 2, sy * (width / 2 - s)), z0),
+                             (x + t, max(sy * width / 2, sy * (width / 2 - s)), z0 + height), role="board")
+              for sy in (-1, 1)]
     for i in range(n):
         z = z0 + height - rh - i * (height - rh) / n
         prims.append(cuboid_between((x, -width / 2 + s, z), (x + t, width / 2 - s, z + rh), role="board"))

@@ -134,7 +134,8 @@ def trestle_base(p, depth: float, width: float, height: float) -> Part:
         prims += [cuboid_between((-depth / 2, y0, 0.0), (depth / 2, y1, fh), role="foot"),
                   cuboid_between((-uw / 2, y0, fh), (uw / 2, y1, height - ch), role="upright"),
                   cuboid_between((-depth / 2, y0, height - ch), (depth / 2, y1, height), role="cleat")]
-    prims.append(cuboid_between((-0.4 * uw, -width / 2 + ut, sz), (0.4 * uw, width / 2 - ut, sz + sh), role="stretcher"))
+    prims.append(cuboid_between((-0.4 * uw, -width / 2 + ut, sz), (0.4 * uw, width / 2 - ut, sz + sh),
+                                role="stretcher"))
     return Part("base", "trestle_base", prims, anchors={"inner": (0.0, width / 2 - ut, 0.0)})
 
 

@@ -56,8 +56,9 @@ def ring_door(p, width: float, height: float, thickness: float | None = None, op
     radius = min(width, height) / 2
     t = p.uniform("thickness", 0.03, 0.05, fixed=thickness)
     ri = radius * p.uniform("glass_ratio", 0.6, 0.75)
-    return _round_door("ring_door", [ring(radius, ri, t, pose=translation(-t / 2, 0, 0) @ _ALONG_X, role="rim"),
-                                     cylinder(ri, 0.006, translation(-t / 2, 0, 0) @ _ALONG_X, role="glass")], radius, t)
+    mid = translation(-t / 2, 0, 0) @ _ALONG_X
+    return _round_door("ring_door", [ring(radius, ri, t, pose=mid, role="rim"), cylinder(ri, 0.006, mid, role="glass")],
+                       radius, t)
 
 
 def dome_door(p, width: float, height: float, thickness: float | None = None, opening: float | None = None) -> Part:
@@ -70,7 +71,8 @@ def dome_door(p, width: float, height: float, thickness: float | None = None, op
     b = ri * p.uniform("bulge", 0.25, 0.4)
     Rs = (ri * ri + b * b) / (2 * b)  # sphere through the glass rim with sagitta b
     cap = sphere(Rs, Rs - b, Rs, pose=translation(b - Rs, 0, 0) @ _ALONG_X, role="glass")
-    return _round_door("dome_door", [ring(radius, ri, t, pose=translation(-t / 2, 0, 0) @ _ALONG_X, role="rim"), cap], radius, t)
+    rim = ring(radius, ri, t, pose=translation(-t / 2, 0, 0) @ _ALONG_X, role="rim")
+    return _round_door("dome_door", [rim, cap], radius, t)
 
 
 def rim_door(p, width: float, height: float, thickness: float | None = None, opening: float | None = None) -> Part:
@@ -108,7 +110,8 @@ def basket(p, radius: float, height: float, shaft: float) -> Part:
     prims = [cylinder(0.02, shaft, translation(0, 0, shaft / 2), role="shaft"),
              cylinder(radius, f, translation(0, 0, shaft + f / 2), role="floor"),
              ring(radius, radius - w, height - f, pose=translation(0, 0, shaft + f + (height - f) / 2), role="wall")]
-    return Part("body", "basket", prims, anchors={"floor": (0.0, 0.0, shaft + f)}, regions={"rotate": Region(("wall",))})
+    return Part("body", "basket", prims, anchors={"floor": (0.0, 0.0, shaft + f)},
+                regions={"rotate": Region(("wall",))})
 
 
 def agitator(p, radius: float, height: float) -> Part:
@@ -127,8 +130,8 @@ def pulsator(p, radius: float, height: float) -> Part:
     t = p.uniform("disc", 0.01, 0.02)
     rh = min(height, p.uniform("rib_height", 0.015, 0.03))
     prims = [cylinder(radius, t, translation(0, 0, t / 2), role="disc")]
-    prims += [cuboid(0.9 * radius, 0.012, rh, rot_z(2 * math.pi * i / n) @ translation(0.45 * radius, 0, t + rh / 2), role="fin")
-              for i in range(n)]
+    prims += [cuboid(0.9 * radius, 0.012, rh, rot_z(2 * math.pi * i / n) @ translation(0.45 * radius, 0, t + rh / 2),
+                     role="fin") for i in range(n)]
     return Part("arm", "pulsator", prims, regions={"rotate": Region(("disc",))})
 
 
@@ -154,8 +157,9 @@ def glass_lid(p, depth: float, width: float) -> Part:
     """Framed glass lid (rim and a tinted pane)."""
     t = p.uniform("thickness", 0.015, 0.025)
     rail = p.uniform("rail", 0.03, 0.06)
-    prims = [rect_ring(depth, width, t, depth - 2 * rail, width - 2 * rail, translation(-depth / 2, 0, -t / 2), role="panel"),
-             cuboid(depth - 2 * rail, width - 2 * rail, 0.005, translation(-depth / 2, 0, -t / 2), role="glass")]
+    c = translation(-depth / 2, 0, -t / 2)
+    prims = [rect_ring(depth, width, t, depth - 2 * rail, width - 2 * rail, c, role="panel"),
+             cuboid(depth - 2 * rail, width - 2 * rail, 0.005, c, role="glass")]
     return _lid("glass_lid", prims, depth, width, t)
 
 

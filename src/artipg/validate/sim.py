@@ -356,7 +356,7 @@ def _mj_model(mujoco, path, joints, free: bool, parent_contacts: bool = True):
     names = {j.name for j in joints}
     for j in spec.joints:
         if j.name in names:
-            j.armature = max(j.armature, 1e-5)
+            j.armature = max(j.armature, 1e-4)
             a = spec.add_actuator()
             a.target = j.name
             a.trntype = mujoco.mjtTrn.mjTRN_JOINT
