@@ -4,7 +4,6 @@ pull-out head slides out along the spout's outlet, lever ranges are realistic.""
 from __future__ import annotations
 
 import numpy as np
-import pytest
 
 import artipg
 

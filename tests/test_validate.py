@@ -472,7 +472,7 @@ def test_a_rack_behind_a_door_needs_the_door_open_but_a_knob_on_its_door_does_no
     joint does not clear the way; a part riding on the blocking joint gets no pass."""
     def cab(ctx):
         root, body, pose = _cabinet(ctx)
-        lo, hi = body.anchor("cavity_lo"), body.anchor("cavity_hi")
+        lo = body.anchor("cavity_lo")
         w, h = W - 0.003, H - 0.003
         door = mount_hinged(ctx.builder, root, slab_door(ctx.p.scope("door"), w, h), front_x=lo[0],
                             center_yz=(0.0, 0.0), size_yz=(w, h), side="+y", limits=(0.0, 1.6), parent_pose=pose)

@@ -49,7 +49,7 @@ def body(ctx):
     z0 = p.uniform("feet", 0.02, 0.05) if ctx.sub == "cabinet_safe" or p.flag("has_feet", 0.3) else 0.0
     if z0:
         root.add(bun_feet(p.scope("feet"), D, W, z0))
-    part = root.add(carcass(p.scope("body"), D, W, H - z0, wall=wall, back=wall), translation(0, 0, z0 + (H - z0) / 2))
+    root.add(carcass(p.scope("body"), D, W, H - z0, wall=wall, back=wall), translation(0, 0, z0 + (H - z0) / 2))
     n = p.integers("shelves", 0, 2 if H > 0.5 else 1)
     for i in range(n):
         z = z0 + wall + (i + 1) * (H - z0 - 2 * wall) / (n + 1)
