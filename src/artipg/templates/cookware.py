@@ -20,7 +20,7 @@ import numpy as np
 from artipg.geometry import cuboid, cuboid_between, cylinder, rect_ring, torus, tube
 from artipg.geometry.transforms import rot_x, rot_y, translation
 from artipg.geometry.tube import arc, line
-from artipg.model.part import Part, Region
+from artipg.model.part import Grasp, Part, Region
 from artipg.templates.handles import arch_handle
 from artipg.templates.lids import flat_lid
 from artipg.templates.levers import top_grasp
@@ -28,6 +28,32 @@ from artipg.templates.levers import top_grasp
 _EMBED = 0.0015  # how deep a handle's root sinks into the wall
 # handles.py frame (protrude -x, long axis +z) -> outward +x, long axis along y
 _SIDEWAYS = np.array([[-1.0, 0.0, 0.0, 0.0], [0.0, 0.0, 1.0, 0.0], [0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 0.0, 1.0]])
+_LIFT = np.array([0.0, 0.0, 1.0])  # fixed handles lift the vessel
+_LIFT.flags.writeable = False
+
+
+def _grasp(x: float, y: float, z: float, approach, jaw, width: float) -> Grasp:
+    """A grasp at (x, y, z) (part frame) approaching along the unit vector ``approach``
+    with the jaws closing along the unit vector ``jaw`` (perpendicular to it)."""
+    T = np.eye(4)
+    T[:3, 1], T[:3, 2] = jaw, approach
+    T[:3, 0] = np.cross(T[:3, 1], T[:3, 2])
+    T[:3, 3] = x, y, z
+    return Grasp(T, width, _LIFT)
+
+
+def _side_grasps(a: float, s, width: float) -> list[Grasp]:
+    """Grasps on a straight handle rising at angle ``a`` from (-_EMBED, 0, 0), at the
+    distances ``s`` along it: approaching from -y, jaws closing across the handle in
+    the x-z plane."""
+    c, n = math.cos(a), math.sin(a)
+    return [_grasp(-_EMBED + si * c, 0.0, si * n, (0.0, 1.0, 0.0), (-n, 0.0, c), width) for si in s]
+
+
+def _radial_grasp(x: float, width: float) -> Grasp:
+    """A grasp on a side lug's outer bar at (x, 0, 0), approaching towards the wall
+    (-x) with the jaws closing vertically."""
+    return _grasp(x, 0.0, 0.0, (-1.0, 0.0, 0.0), (0.0, 0.0, 1.0), width)
 
 
 def _handle(name, prims, grip=("grip",), clear: float | None = None) -> Part:
@@ -55,8 +81,10 @@ def stick_handle(p, radius: float) -> Part:
     L = p.uniform("length", 0.14, 0.22)
     a = p.uniform("rise", 0.05, 0.3)
     bracket, clear = _bracket(p, r, a)
-    return _handle("stick_handle", [bracket] + tube(r, [line(L)], a, translation(-_EMBED, 0, 0), role="grip"),
+    part = _handle("stick_handle", [bracket] + tube(r, [line(L)], a, translation(-_EMBED, 0, 0), role="grip"),
                    clear=clear)
+    part.grasps = _side_grasps(a, (0.45 * L, 0.75 * L), 2 * r + 0.02)
+    return part
 
 
 def grip_handle(p, radius: float) -> Part:
@@ -73,7 +101,9 @@ def grip_handle(p, radius: float) -> Part:
                                        role="neck"),
              cylinder(rg, lg, T @ translation(ln + lg / 2, 0, 0) @ rot_y(math.pi / 2), role="grip"),
              torus(rr, 0.002, pose=T @ translation(ln + lg + rr - 0.001, 0, 0), role="grip")]
-    return _handle("grip_handle", prims, clear=clear)
+    part = _handle("grip_handle", prims, clear=clear)
+    part.grasps = _side_grasps(a, (ln + 0.3 * lg, ln + 0.7 * lg), 2 * rg + 0.02)
+    return part
 
 
 def flat_handle(p, radius: float) -> Part:
@@ -87,7 +117,9 @@ def flat_handle(p, radius: float) -> Part:
     bracket, clear = _bracket(p, t, a)
     prims = [bracket, cuboid(L, w, t, T @ translation(L / 2, 0, 0), role="grip"),
              rect_ring(eye + w * 0.4, w, t, eye, w * 0.5, T @ translation(L + eye / 2 - 0.002, 0, 0), role="grip")]
-    return _handle("flat_handle", prims, clear=clear)
+    part = _handle("flat_handle", prims, clear=clear)
+    part.grasps = _side_grasps(a, (0.45 * L, 0.75 * L), t + 0.02)
+    return part
 
 
 LONG_HANDLES = {stick_handle: 2.0, grip_handle: 1.5, flat_handle: 1.5}
@@ -103,7 +135,9 @@ def loop_lug(p, radius: float) -> Part:
     R = p.uniform("loop_radius", 0.012, 0.025)
     a = p.uniform("reach", 0.012, 0.03) + _sag(radius, R) + _EMBED
     T = rot_x(-math.pi / 2) @ translation(-_sag(radius, R) - _EMBED, 0, -R)  # tube plane x-z -> x-y
-    return _handle("loop_lug", tube(r, [line(a), arc(R, math.pi), line(a)], 0.0, T, role="grip"), clear=r)
+    part = _handle("loop_lug", tube(r, [line(a), arc(R, math.pi), line(a)], 0.0, T, role="grip"), clear=r)
+    part.grasps = [_radial_grasp(a - _sag(radius, R) - _EMBED + R, 2 * r + 0.02)]
+    return part
 
 
 def tab_lug(p, radius: float) -> Part:
@@ -113,8 +147,10 @@ def tab_lug(p, radius: float) -> Part:
     t = p.uniform("thickness", 0.004, 0.008)
     rim = p.uniform("rim", 0.008, 0.012)
     s = _sag(radius, w / 2) + _EMBED
-    return _handle("tab_lug", [rect_ring(d + s, w, t, d + s - 2 * rim, w - 2 * rim, translation((d + s) / 2 - s, 0, 0),
-                                         role="grip")], clear=t / 2)
+    part = _handle("tab_lug", [rect_ring(d + s, w, t, d + s - 2 * rim, w - 2 * rim,
+                                         translation((d + s) / 2 - s, 0, 0), role="grip")], clear=t / 2)
+    part.grasps = [_radial_grasp(d - rim / 2, t + 0.02)]
+    return part
 
 
 def arch_lug(p, radius: float) -> Part:
@@ -123,7 +159,7 @@ def arch_lug(p, radius: float) -> Part:
     part = arch_handle(p, length=L)
     T = translation(-_sag(radius, L / 2) - _EMBED, 0, 0) @ _SIDEWAYS
     part.primitives = [pr.placed(T) for pr in part.primitives]
-    part.grasps = []
+    part.grasps = [Grasp(T @ g.pose, g.width, _LIFT) for g in part.grasps]
     part.template = "arch_lug"
     part.anchors["clear"] = (0.0, 0.0, float(part.bounds()[1, 2]))
     return part
@@ -162,6 +198,7 @@ def c_handle(p, r_top: float, z_top: float, r_bot: float, z_bot: float) -> Part:
     rb = min(p.uniform("bend", 0.015, 0.03), (z_top - z_bot) / 2 - 0.004)
     segs, T, x = _c_path(r_top, z_top, r_bot, z_bot, max(p.uniform("reach", 0.035, 0.05), rb + r_bot - r_top), rb)
     part = _handle("c_handle", tube(r, segs, 0.0, T, role="grip"))
+    part.grasps = [_grasp(x, 0.0, (z_top + z_bot) / 2, (-1.0, 0.0, 0.0), (0.0, 1.0, 0.0), 2 * r + 0.02)]
     part.anchors.update(top=((r_top + x - rb) / 2, 0.0, z_top + r), tube=(r, 0.0, 0.0))
     return part
 
@@ -176,6 +213,7 @@ def sleeved_c_handle(p, r_top: float, z_top: float, r_bot: float, z_bot: float) 
     prims = tube(r, segs, 0.0, T, role="frame")
     prims.append(cylinder(rs, ls, translation(x, 0, (z_top + z_bot) / 2), role="grip"))
     part = _handle("sleeved_c_handle", prims)
+    part.grasps = [_grasp(x, 0.0, (z_top + z_bot) / 2, (-1.0, 0.0, 0.0), (0.0, 1.0, 0.0), 2 * rs + 0.02)]
     part.anchors.update(top=((r_top + x - rb) / 2, 0.0, z_top + r), tube=(r, 0.0, 0.0))
     return part
 
@@ -189,6 +227,7 @@ def block_c_handle(p, r_top: float, z_top: float, r_bot: float, z_bot: float) ->
              cuboid_between((x - t / 2, -w / 2, z_bot - t / 2), (x + t / 2, w / 2, z_top + t / 2), role="grip"),
              cuboid_between((r_bot - _EMBED, -w / 2, z_bot - t / 2), (x + t / 2, w / 2, z_bot + t / 2), role="grip")]
     part = _handle("block_c_handle", prims)
+    part.grasps = [_grasp(x, 0.0, (z_top + z_bot) / 2, (-1.0, 0.0, 0.0), (0.0, 1.0, 0.0), w + 0.02)]
     part.anchors.update(top=((r_top + x) / 2, 0.0, z_top + t / 2), tube=(t / 2, 0.0, 0.0))
     return part
 
@@ -205,4 +244,5 @@ def arch_top_handle(p, d: float, clearance: float) -> Part:
     segs = [line(h + _EMBED), arc(R, -math.pi / 2), line(2 * (d - R)), arc(R, -math.pi / 2), line(h + _EMBED)]
     part = _handle("arch_top_handle", tube(r, segs, math.pi / 2, translation(-d, 0, -_EMBED), role="grip"))
     part.anchors["under"] = (0.0, 0.0, h + R - r)
+    part.grasps = [top_grasp(k * (d - R), 0.0, h + R, 2 * r + 0.02, "y") for k in (-0.5, 0.0, 0.5)]
     return part

@@ -18,6 +18,7 @@ import numpy as np
 from artipg.geometry import cuboid_between, cylinder, ring, tri_prism
 from artipg.geometry.transforms import rot_x, rot_z, translation
 from artipg.model.part import Part, Region
+from artipg.templates.levers import top_grasp
 
 _Y = rot_x(math.pi / 2)  # local z -> object -y (cylinders and rings along y)
 # arcs swept about x: local x -> y, local y -> z, local z -> x
@@ -89,8 +90,10 @@ def _arm(name, top, p, length, width, radius, clear, skirt, axle_r, nose_gap):
         prims.append(ring(axle_r + 0.0026, axle_r + 0.0004, y1 - y0, pose=translation(0, s * (y0 + y1) / 2, 0) @ _Y,
                           role="skirt"))
     prims.append(cuboid_between((x0, -y1, -radius + 0.001), (x0 + t, y1, z1), role="nose"))
+    # from above near the nose, jaws closing across the arm's width outside the skirts
+    grasp = top_grasp(0.7 * x0, 0.0, radius + clear, 2 * y1 + 0.02, "y")
     return Part("arm", name, prims, regions={"push": Region(("cover",)), "grasp": Region(("cover",))},
-                actionable="hinge_handle")
+                grasps=[grasp], actionable="hinge_handle")
 
 
 def flat_arm(p, length, width, radius, clear, skirt, axle_r, nose_gap) -> Part:

@@ -16,10 +16,12 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
+
 from artipg.geometry import cuboid, cylinder, frustum, tube
 from artipg.geometry.transforms import rot_y, translation
 from artipg.geometry.tube import arc, line
-from artipg.model.part import Part, Region
+from artipg.model.part import Grasp, Part, Region
 
 _EMBED = 0.0008  # the spout's inner face sits this deep in the wall (walls are >= 1.5 mm)
 
@@ -99,7 +101,14 @@ def whistle_cap(p, tip_radius: float) -> Part:
     prims = [cylinder(rc, L, translation(0.0005 + L / 2, 0, -rc) @ rot_y(math.pi / 2), role="cap"),
              cuboid(tab, 0.5 * rc, 0.002, translation(0.0005 + L / 2, 0, 0.0008), role="tab")]
     return Part("cap", "whistle_cap", prims, anchors={"radius": (rc, 0.0, 0.0)},
-                regions={"push": Region(("tab",)), "lift": Region(("tab", "cap"))}, actionable="hinge_lid")
+                regions={"push": Region(("tab",)), "lift": Region(("tab", "cap"))},
+                grasps=[Grasp(_end_grasp(0.0005 + L - 0.004, -rc), 2 * rc + 0.02)], actionable="hinge_lid")
+
+
+def _end_grasp(x: float, z: float) -> np.ndarray:
+    """Gripper frame (4, 4) approaching a cap's outer end along -x at (x, 0, z), jaws
+    closing along y (clear of the spout behind the hinge at any opening)."""
+    return np.array([[0.0, 0.0, -1.0, x], [0.0, 1.0, 0.0, 0.0], [1.0, 0.0, 0.0, z], [0.0, 0.0, 0.0, 1.0]])
 
 
 def mount_pose(tip, heading: float, cap_radius: float):
