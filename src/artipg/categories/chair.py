@@ -36,6 +36,7 @@ from artipg.templates.seating import BACKS, CASTERS, SEATS, STOOL_SEATS, paddle_
 from artipg.templates.supports import round_legs, square_legs, tapered_legs
 
 LEGS = {square_legs: 1.0, round_legs: 1.0, tapered_legs: 1.0}
+STAR_ARMS = {5: 8.0, 4: 1.0, 6: 1.0}  # office chair bases: nearly always five casters
 
 
 def _box(lo, hi, role="frame"):
@@ -54,7 +55,7 @@ def _lever(ctx, link, p, x, y, z, clearance):
 
 def _office(ctx):
     p = ctx.p
-    n = p.choice("arms", {5: 8.0, 4: 1.0, 6: 1.0})
+    n = p.choice("arms", STAR_ARMS)
     reach, rw = p.uniform("reach", 0.28, 0.34), p.uniform("wheel_radius", 0.024, 0.033)
     ww = p.uniform("wheel_width", 0.014, 0.022)
     ah = p.uniform("arm_height", 0.03, 0.045)

@@ -41,6 +41,7 @@ SUBS = {
     "countertop": ((0.54, 0.56), (0.43, 0.46), (0.48, 0.52), (1, 1), "body"),
 }
 HANDLES = {flat_bar_handle: 2.0, arch_handle: 1.5, edge_pull: 1.0}  # bar_handle posts float (reported)
+PANEL_DOORS = {slab_door: 1.0, framed_door: 1.0}  # integrated models take the kitchen's door panel
 
 
 def body(ctx):
@@ -76,7 +77,7 @@ def door(ctx):
         strip = control_panel(p.scope("strip"), W, cs, tc)
         root.add(strip, translation(-D / 2, 0, Ht - cs / 2))
         panel_pose = translation(-D / 2 - tc, 0, Ht - cs / 2)
-    tmpl = slab_door if ctrl != "door_top" else choose(ctx, p, "door", {slab_door: 1.0, framed_door: 1.0})
+    tmpl = slab_door if ctrl != "door_top" else choose(ctx, p, "door", PANEL_DOORS)
     if ctrl == "door_front":  # the handle goes under the control strip
         margin = cs + p.uniform("handle_gap", 0.03, 0.045)
     else:

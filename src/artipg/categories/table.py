@@ -7,7 +7,7 @@ on legs may have a lower shelf. The apron's front board holds 1-3 drawers. Desks
 instead stand on one or two drawer pedestals (carcasses with 1-3 overlay drawers or a
 door each, the other side on a panel end) with an optional centre drawer.
 Joints: drawers prismatic along -x (0.6-0.85 of their depth), pedestal doors revolute
-about their outer vertical edge (1.5-2.0 rad); 1-7 movable joints, all others fixed.
+about their outer vertical edge (1.5-2.0 rad); 1-6 movable joints, all others fixed.
 Sizes (metres, width along y): dining 0.9-2.2 x 0.75-1.05, 0.72-0.78 tall; coffee
 0.8-1.4 x 0.45-0.8, 0.35-0.5 tall; side 0.4-0.65 square, 0.5-0.75 tall; desk
 1.0-1.8 x 0.55-0.8, 0.72-0.78 tall.
@@ -36,6 +36,7 @@ SUBS = {
     "side": ((0.4, 0.65), (0.4, 0.65), (0.5, 0.75), {"legs": 3.0, "pedestal": 1.0}, 1),
 }
 LEGS = {square_legs: 1.0, round_legs: 1.0, tapered_legs: 1.0}
+DESK_TOPS = {slab_top: 1.0}
 GAP = 0.003  # between neighbouring fronts
 
 
@@ -43,7 +44,7 @@ def top(ctx):
     p = ctx.p
     w, d, h, *_ = SUBS[ctx.sub]
     W, D, H = p.uniform("width", *w), p.uniform("depth", *d), p.uniform("height", *h)
-    part = ctx.choose("top", {slab_top: 1.0} if ctx.sub == "desk" else TOPS)(p, D, W)
+    part = ctx.choose("top", DESK_TOPS if ctx.sub == "desk" else TOPS)(p, D, W)
     zu = H - part.anchor("surface")[2]
     root = ctx.builder.create_link("base")
     root.add(part, translation(0, 0, zu))

@@ -39,6 +39,8 @@ SUBS = {  # width, height, depth ranges, door radius range
     "twin_tub": ((0.7, 0.8), (0.8, 0.9), (0.4, 0.46), None),
 }
 _ALONG_X = rot_y(math.pi / 2)
+DOOR_HANDLES = {edge_pull: 1.0, flat_bar_handle: 1.0}
+HINGES = {"+y": 4.0, "-y": 1.0}  # front-loader doors are mostly hinged on the left
 
 
 def _box(lo, hi, role="panel"):
@@ -136,16 +138,17 @@ def fronts(ctx):
             m = q.uniform("margin", 0.01, 0.05) if m_max > 0.05 else m_max
             lid = ctx.choose("lid", LIDS)(q, xh - (xc - a - m), 2 * (a + m))
             link = ctx.builder.create_link("lid", root)
-            link.set_joint("revolute", translation(xh, yc, H + lid.bounds()[1][2] - lid.bounds()[0][2]), axis=(0, 1, 0),
+            b = lid.bounds()
+            link.set_joint("revolute", translation(xh, yc, H + b[1][2] - b[0][2]), axis=(0, 1, 0),
                            limits=(0.0, q.uniform("limit", 1.2, 1.5)))
             link.add(lid)
         _controls(ctx, root, translation(xb, 0, H + ch / 2), W, ch, len(holes) == 2)
         return
     wall, tp, zs, cz, R, ro = rest
     t = p.uniform("door_thickness", 0.03, 0.05)
-    handle = ctx.choose("handle", {edge_pull: 1.0, flat_bar_handle: 1.0})
+    handle = ctx.choose("handle", DOOR_HANDLES)
     add_door(ctx, root, p.scope("door"), front_x=-D / 2 - tp, outer=(-R, R, cz - R, cz + R),
-             side=p.choice("hinge", {"+y": 4, "-y": 1}), limits=(0.0, p.uniform("door_limit", 1.6, 2.2)),
+             side=p.choice("hinge", HINGES), limits=(0.0, p.uniform("door_limit", 1.6, 2.2)),
              template=ctx.choose("door", ROUND_DOORS), thickness=t, handle=handle, margin=t / 2, opening=ro,
              handle_length=p.uniform("handle_length", 0.06, 0.1))  # the handle sits on the rim
     x = -D / 2 - tp

@@ -20,9 +20,6 @@ from pathlib import Path
 import numpy as np
 import trimesh
 
-MOVABLE_TYPES = ("revolute", "continuous", "prismatic", "planar", "floating")
-
-
 @dataclass
 class LoadedURDF:
     """Visual geometry and joint structure of a URDF at its rest pose.
