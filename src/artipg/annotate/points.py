@@ -94,7 +94,8 @@ class PrimitiveTable:
         return [link_poses[g.link] @ g.T for g in self.groups]
 
     def bounds(self, link_poses: np.ndarray) -> np.ndarray:
-        """Exact bounding box (2, 3) of all primitives in the object frame."""
+        """Bounding box (2, 3) of all primitives in the object frame (union of their
+        transformed local boxes: exact for boxes, loose for rotated round solids)."""
         lo = np.full(3, np.inf)
         hi = np.full(3, -np.inf)
         for g, W in zip(self.groups, self.world(link_poses)):

@@ -180,7 +180,9 @@ class ArticulatedObject:
         return PrimitiveTable.of(self)
 
     def bounds(self, qpos=None) -> np.ndarray:
-        """Exact axis-aligned bounding box (2, 3) of the object at ``qpos``."""
+        """Axis-aligned bounding box (2, 3) of the object at ``qpos``: the union of each
+        primitive's local box transformed to the object frame, so exact for boxes and
+        axis-aligned solids and slightly loose for rotated round ones."""
         return self.primitive_table.bounds(self.link_poses(qpos))
 
     def sample_points(self, n: int = 2048, seed: int = 0, qpos=None, parts=None):
