@@ -27,7 +27,7 @@ from artipg.templates.appliance import control_panel, display
 from artipg.templates.bodies import carcass
 from artipg.templates.cells import add_door, choose
 from artipg.templates.controls import BUTTONS, KNOBS, button_bezel, mount_button, mount_knob
-from artipg.templates.handles import arch_handle, edge_pull, flat_bar_handle
+from artipg.templates.handles import arch_handle, bar_handle, edge_pull, flat_bar_handle
 from artipg.templates.mounting import mount_sliding
 from artipg.templates.panels import framed_door, slab_door
 from artipg.templates.racks import cutlery_tray, spray_arm, wire_rack
@@ -40,7 +40,7 @@ SUBS = {
     "built_in": ((0.595, 0.6), (0.815, 0.875), (0.55, 0.57), (2, 3), "door_top"),
     "countertop": ((0.54, 0.56), (0.43, 0.46), (0.48, 0.52), (1, 1), "body"),
 }
-HANDLES = {flat_bar_handle: 2.0, arch_handle: 1.5, edge_pull: 1.0}  # bar_handle posts float (reported)
+HANDLES = {bar_handle: 2.0, flat_bar_handle: 2.0, arch_handle: 1.5, edge_pull: 1.0}
 PANEL_DOORS = {slab_door: 1.0, framed_door: 1.0}  # integrated models take the kitchen's door panel
 
 

@@ -28,7 +28,7 @@ from artipg.templates.appliance import appliance_housing, control_panel, display
 from artipg.templates.bodies import carcass
 from artipg.templates.cells import add_door, add_drawer
 from artipg.templates.controls import BUTTONS, KNOBS, button_bezel, mount_button, mount_knob
-from artipg.templates.handles import arch_handle, edge_pull, flat_bar_handle
+from artipg.templates.handles import arch_handle, bar_handle, edge_pull, flat_bar_handle
 from artipg.templates.panels import box_drawer, glass_door, slab_door
 from artipg.templates.racks import oven_rack
 from artipg.templates.stove import COOKTOPS
@@ -40,7 +40,7 @@ SUBS = {  # width, height, depth ranges
     "double_oven": ((0.56, 0.76), (0.88, 1.05), (0.55, 0.6)),
     "countertop": ((0.4, 0.55), (0.22, 0.34), (0.3, 0.42)),
 }
-HANDLES = {flat_bar_handle: 2.0, arch_handle: 1.5, edge_pull: 1.0}  # bar_handle posts float (reported)
+HANDLES = {bar_handle: 2.0, flat_bar_handle: 2.0, arch_handle: 1.5, edge_pull: 1.0}
 DOORS = {glass_door: 3.0, slab_door: 1.0}
 
 

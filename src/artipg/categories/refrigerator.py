@@ -22,7 +22,7 @@ from artipg.model.part import Part, Region
 from artipg.rules import Category, Slot
 from artipg.templates.bodies import carcass
 from artipg.templates.cells import add_door, add_drawer
-from artipg.templates.handles import arch_handle, edge_pull, flat_bar_handle
+from artipg.templates.handles import arch_handle, bar_handle, edge_pull, flat_bar_handle
 from artipg.templates.panels import box_drawer, framed_door, glass_door, slab_door
 from artipg.templates.racks import door_bins
 from artipg.templates.supports import plinth
@@ -35,7 +35,7 @@ SUBS = {
     "french_door": ((0.75, 0.92), (1.7, 1.9), (0.68, 0.8), (0.28, 0.36), "french"),
     "single_door": ((0.48, 0.6), (0.82, 1.85), (0.55, 0.65), (0.0, 0.0), "single"),
 }
-HANDLES = {flat_bar_handle: 2.0, arch_handle: 1.5, edge_pull: 1.0}  # bar_handle posts float (reported)
+HANDLES = {bar_handle: 2.0, flat_bar_handle: 2.0, arch_handle: 1.5, edge_pull: 1.0}
 DOORS = {slab_door: 3.0, framed_door: 1.0}
 BEVERAGE_DOORS = {slab_door: 3.0, framed_door: 1.0, glass_door: 1.5}
 GAP = 0.004
