@@ -27,7 +27,7 @@ from artipg.rules import Category, Slot
 from artipg.templates.appliance import appliance_housing, control_panel, display
 from artipg.templates.bodies import carcass
 from artipg.templates.cells import add_door, add_drawer
-from artipg.templates.controls import BUTTONS, KNOBS, button_bezel, mount_button, mount_knob
+from artipg.templates.controls import BUTTONS, KNOBS, mount_button_row, mount_knob
 from artipg.templates.handles import arch_handle, bar_handle, edge_pull, flat_bar_handle
 from artipg.templates.panels import box_drawer, glass_door, slab_door
 from artipg.templates.racks import oven_rack
@@ -181,12 +181,7 @@ def _controls(ctx, root, panel):
     if p.flag("display", 0.7):
         root.add(display(p.scope("display"), 0.3 * (hi - lo), 0.5 * h), pose @ translation(0, (lo + hi) / 2, h / 5))
     tmpl, k = ctx.choose("button", BUTTONS), p.integers("buttons", 2, max(2, min(5, int((hi - lo) / 0.034))))
-    for i in range(k):
-        q = p.scope(f"button{i}")
-        b = tmpl(q, radius=0.007) if tmpl.__name__ == "round_button" else tmpl(q, width=0.016, height=0.011)
-        T = pose @ translation(0, lo + (hi - lo) * (i + 0.5) / k, -h / 4)
-        root.add(button_bezel(q.scope("bezel"), b, gap=0.0006), T)
-        mount_button(ctx.builder, root, b, T)
+    mount_button_row(p, ctx.builder, root, tmpl, k, pose, lo, hi, -h / 4, radius=0.007, square=(0.016, 0.011))
 
 
 RULE = Category(

@@ -26,7 +26,7 @@ from artipg.model.part import Part
 from artipg.rules import Category, Slot
 from artipg.templates.bodies import carcass
 from artipg.templates.cells import add_door, add_drawer
-from artipg.templates.controls import BUTTONS, KNOBS, button_bezel, dial_knob, mount_button, mount_knob
+from artipg.templates.controls import BUTTONS, KNOBS, dial_knob, mount_button_row, mount_knob
 from artipg.templates.handles import edge_pull, flat_bar_handle
 from artipg.templates.panels import DRAWERS
 from artipg.templates.supports import bun_feet
@@ -183,12 +183,7 @@ def _controls(ctx, root, pose, w, h, twin):
         root.add(Part("screen", "display", [screen]), pose)
         hi -= 0.3 * (hi - lo) + 0.02
     tmpl, k = ctx.choose("button", BUTTONS), p.integers("buttons", 1, max(1, min(5, int((hi - lo) / 0.036))))
-    for i in range(k):
-        q = p.scope(f"button{i}")
-        b = tmpl(q, radius=0.008) if tmpl.__name__ == "round_button" else tmpl(q, width=0.018, height=0.012)
-        T = pose @ translation(0, lo + (hi - lo) * (i + 0.5) / k, 0)
-        root.add(button_bezel(q.scope("bezel"), b, gap=0.0006), T)
-        mount_button(ctx.builder, root, b, T)
+    mount_button_row(p, ctx.builder, root, tmpl, k, pose, lo, hi, 0.0, radius=0.008, square=(0.018, 0.012))
 
 
 RULE = Category(

@@ -234,3 +234,19 @@ def mount_rocker(builder, parent, part, pose: np.ndarray, name: str = "switch"):
     link.set_joint("revolute", pose @ rot_z(-tilt), axis=(0.0, 0.0, 1.0), limits=(0.0, 2 * tilt))
     link.add(part)
     return link
+
+
+def mount_button_row(p, builder, root, tmpl, k: int, pose, y_lo: float, y_hi: float, z: float,
+                     radius: float, square: tuple[float, float]) -> None:
+    """Mount ``k`` bezelled push buttons of template ``tmpl`` evenly along y in
+    [y_lo, y_hi] at height ``z`` of a panel whose front frame is ``pose``.
+
+    Round buttons get ``radius``, others ``square`` = (width, height), metres.
+    Parameters are drawn under ``button<i>``.
+    """
+    for i in range(k):
+        q = p.scope(f"button{i}")
+        b = tmpl(q, radius=radius) if tmpl.__name__ == "round_button" else tmpl(q, width=square[0], height=square[1])
+        T = pose @ translation(0, y_lo + (y_hi - y_lo) * (i + 0.5) / k, z)
+        root.add(button_bezel(q.scope("bezel"), b, gap=0.0006), T)
+        mount_button(builder, root, b, T)
