@@ -114,3 +114,33 @@ def test_collision_pieces_cover_hollow_shapes_without_filling_them():
     for pc in pieces:
         hull = trimesh.Trimesh(pc.vertices, pc.faces)
         assert not hull.contains(centre)[0]
+
+
+@pytest.mark.parametrize("name", sorted(CASES))
+def test_patches_partition_the_components(name):
+    """Patch areas sum to each component's closed-form area, and every patch family's
+    parameters are those the sampler expects."""
+    from artipg.geometry.patches import FAMILIES
+
+    prim = CASES[name]
+    P = np.array([prim.params, prim.params], dtype=float)
+    comp_area = prim.geom.component_areas(P)
+    got = np.zeros_like(comp_area)
+    for b in prim.geom.patches(P):
+        c, p, M = b.params.shape
+        assert p == FAMILIES[b.family] and M == len(P) and b.area.shape == (c, M) and len(b.comp) == c
+        assert np.all(b.area >= 0.0)
+        np.add.at(got.T, b.comp, b.area)
+    np.testing.assert_allclose(got, comp_area, rtol=1e-12, atol=1e-15)
+
+
+def test_linear_patch_tables_match_their_builders():
+    """The compiled affine tables of the cap patches reproduce the general builders."""
+    from artipg.geometry.revolve import _FRUSTUM_CAPS, _RING_CAPS, Frustum, Ring
+
+    rng = np.random.default_rng(1)
+    for geom, table in ((Frustum, _FRUSTUM_CAPS), (Ring, _RING_CAPS)):
+        P = rng.random((7, len(geom.params)))
+        c, p, _ = table.shape
+        fast = (table.reshape(c * p, -1)[:, :-1] @ P.T + table.reshape(c * p, -1)[:, -1:]).reshape(c, p, len(P))
+        np.testing.assert_allclose(fast, geom._caps(P).params, rtol=1e-12, atol=1e-15)

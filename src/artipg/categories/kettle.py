@@ -75,7 +75,8 @@ def handle(ctx):
         root.add(h, _at(zb))
         return h, zl, None
     lift = p.uniform("lift", 0.02, 0.05)
-    above = rim + float(lid.anchors["top"][2]) + lift + 0.004  # lifted lid, plus clearance
+    # lifted lid plus room for fingers on its knob (a gripper reaching in from the side)
+    above = rim + float(lid.anchors["top"][2]) + lift + 0.015
     d = (wall_radius(part, H) + float(lid.anchors["hinge"][0])) / 2
     if wall_radius(part, H) - d > 0.012 and p.flag("fixed_arch", 0.35):
         root.add(arch_top_handle(p, d, above - H), _at(zb + H))

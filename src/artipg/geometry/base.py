@@ -19,6 +19,7 @@ from typing import ClassVar, NamedTuple
 
 import numpy as np
 
+from artipg.geometry.patches import sample_family
 from artipg.geometry.transforms import IDENTITY, apply
 
 TWO_PI = 2.0 * np.pi
@@ -52,12 +53,29 @@ class GeometryTemplate:
         raise NotImplementedError
 
     @classmethod
-    def sample_components(cls, P: np.ndarray, comp: np.ndarray, rng: np.random.Generator):  # pragma: no cover
+    def patches(cls, P: np.ndarray) -> list:  # pragma: no cover - abstract
+        """The surface as :class:`artipg.geometry.patches.Patch` blocks, for rows of ``P``
+        (M, p); patch areas of component c sum to ``component_areas(P)[:, c]``."""
+        raise NotImplementedError
+
+    @classmethod
+    def sample_components(cls, P: np.ndarray, comp: np.ndarray, rng: np.random.Generator):
         """One area-uniform point and outward normal per row on component ``comp`` (k,).
 
         Returns points (k, 3) and unit normals (k, 3) in the local frame.
         """
-        raise NotImplementedError
+        blocks = cls.patches(P)
+        area = np.concatenate([b.area for b in blocks]).T  # (k, patches)
+        pcomp = np.concatenate([b.comp for b in blocks])
+        which = pick(np.where(pcomp[None, :] == comp[:, None], area, 0.0), rng)
+        out = np.empty((6, len(P)))
+        start = 0
+        for b in blocks:
+            sel = np.flatnonzero((which >= start) & (which < start + len(b.comp)))
+            if len(sel):
+                out[:, sel] = sample_family(b.family, b.params[which[sel] - start, :, sel].T, rng)
+            start += len(b.comp)
+        return out[:3].T, out[3:].T
 
     @classmethod
     def area(cls, P: np.ndarray) -> np.ndarray:
@@ -159,6 +177,22 @@ def corners_bounds(b: np.ndarray, T: np.ndarray) -> np.ndarray:
     c = b[0] + _CORNER_SIGNS * (b[1] - b[0])
     w = c @ T[:3, :3].T + T[:3, 3]
     return np.stack([w.min(axis=0), w.max(axis=0)])
+
+
+def boxes(lo, hi) -> np.ndarray:
+    """Boxes (M, 2, 3) from corner columns ``lo``, ``hi`` (3-tuples of (M,) arrays or
+    scalars; at least one an array), written in place rather than stacked."""
+    M = max(len(v) if isinstance(v, np.ndarray) else 1 for v in (*lo, *hi))
+    out = np.empty((M, 2, 3))
+    for k in range(3):
+        out[:, 0, k] = lo[k]
+        out[:, 1, k] = hi[k]
+    return out
+
+
+def centred_boxes(hx, hy, hz) -> np.ndarray:
+    """Boxes (M, 2, 3) centred on the origin with half extents ``hx``, ``hy``, ``hz``."""
+    return boxes((-hx, -hy, -hz), (hx, hy, hz))
 
 
 # ---------------------------------------------------------------- sampling helpers

@@ -5,8 +5,31 @@ from __future__ import annotations
 import numpy as np
 import trimesh
 
-from artipg.geometry.base import CollisionPiece, GeometryTemplate, Primitive, rect_points
+from artipg.geometry.base import CollisionPiece, GeometryTemplate, Primitive
+from artipg.geometry.patches import linear
 from artipg.geometry.transforms import IDENTITY, translation
+
+
+def _box_tables():
+    """Faces -x, +x, -y, +y, -z, +z of a box as linear maps of (sx, sy, sz).
+
+    Returns the rect-patch table (6, 12, 4) of :func:`artipg.geometry.patches.linear`: coefficients of
+    (sx, sy, sz) and a constant (the normals).
+    """
+    coef = np.zeros((6, 12, 4))
+    for f in range(6):
+        k, sign = f // 2, (f % 2) * 2.0 - 1.0
+        i, j = [ax for ax in range(3) if ax != k]
+        coef[f, k, k] = 0.5 * sign  # origin: the face's (-, -) corner
+        coef[f, i, i] = coef[f, j, j] = -0.5
+        coef[f, 3 + i, i] = 1.0  # edge a along axis i
+        coef[f, 6 + j, j] = 1.0  # edge b along axis j
+        coef[f, 9 + k, 3] = sign
+    return coef
+
+
+_BOX_TABLE = _box_tables()
+_BOX_COMP = np.arange(6)
 
 
 
@@ -28,16 +51,8 @@ class Cuboid(GeometryTemplate):
         return 2.0 * (sx * sy + sy * sz + sx * sz)
 
     @classmethod
-    def sample_components(cls, P, comp, rng):
-        ax = comp >> 1
-        sign = (comp & 1) * 2.0 - 1.0
-        pts = (rng.random(P.shape) - 0.5) * P
-        nrm = np.zeros(P.shape)
-        for a in range(3):
-            m = ax == a
-            pts[m, a] = 0.5 * sign[m] * P[m, a]
-            nrm[m, a] = sign[m]
-        return pts, nrm
+    def patches(cls, P):
+        return [linear("rect", _BOX_COMP, P, _BOX_TABLE, cls.component_areas(P).T)]
 
     @classmethod
     def sdf(cls, p, x):
@@ -53,7 +68,8 @@ class Cuboid(GeometryTemplate):
 
     @classmethod
     def bounds_batch(cls, P):
-        return np.stack([-P / 2.0, P / 2.0], axis=1)
+        h = P[:, :3] * 0.5
+        return np.stack([-h, h], axis=1)
 
     @classmethod
     def mesh(cls, p, sections=32):
@@ -89,11 +105,8 @@ class RectRing(GeometryTemplate):
         return 2.0 * (ox * oy - ix * iy) + 2.0 * d * (ox + oy + ix + iy)
 
     @classmethod
-    def sample_components(cls, P, comp, rng):
-        C, S, N, A0, A1 = _RING_TABLES
-        centers = np.einsum("kp,kpc->kc", P, C[:, comp].transpose(1, 0, 2))
-        sizes = np.einsum("kp,kpc->kc", P, S[:, comp].transpose(1, 0, 2))
-        return rect_points(centers, sizes, rng), N[comp]
+    def patches(cls, P):
+        return [linear("rect", _RING_COMP, P, _RING_TABLE, cls.component_areas(P).T)]
 
     @classmethod
     def sdf(cls, p, x):
@@ -173,6 +186,23 @@ def _ring_tables():
 
 
 _RING_TABLES = _ring_tables()
+
+
+def _ring_patch_tables():
+    """The 16 rectangles of :func:`_ring_tables` as the rect-patch table (16, 12, 6) of
+    :func:`artipg.geometry.patches.linear`: origin = centre - size / 2, edges along the two in-plane axes."""
+    C, S, N, A0, A1 = _RING_TABLES
+    coef = np.zeros((16, 12, 6))
+    rows = np.arange(16)
+    coef[:, 0:3, :5] = (C - S / 2).transpose(1, 2, 0)
+    coef[rows, 3 + A0, :5] = S[:, rows, A0].T
+    coef[rows, 6 + A1, :5] = S[:, rows, A1].T
+    coef[:, 9:12, 5] = N
+    return coef
+
+
+_RING_TABLE = _ring_patch_tables()
+_RING_COMP = np.arange(16)
 
 
 def cuboid(sx: float, sy: float, sz: float, pose: np.ndarray = IDENTITY, role: str = "") -> Primitive:

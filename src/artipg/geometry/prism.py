@@ -9,19 +9,11 @@ import numpy as np
 import trimesh
 from shapely.geometry import Polygon
 
-from artipg.geometry.base import GeometryTemplate, Primitive, polygon_sdf
+from artipg.geometry.base import TWO_PI, GeometryTemplate, Primitive, boxes, polygon_sdf
+from artipg.geometry.patches import rects, tris
 from artipg.geometry.transforms import IDENTITY
 
 MAX_SIDES = 16
-
-
-def _fan_point(V0, A1, A2, rng):
-    """Uniform points in triangles V0 + u*A1 + v*A2 (all (k, 2))."""
-    u, v = rng.random((2, len(V0)))
-    flip = u + v > 1.0
-    u = np.where(flip, 1.0 - u, u)
-    v = np.where(flip, 1.0 - v, v)
-    return V0 + u[:, None] * A1 + v[:, None] * A2
 
 
 def _extrusion_sdf(poly: np.ndarray, depth: float, x: np.ndarray) -> np.ndarray:
@@ -54,25 +46,23 @@ class Prism(GeometryTemplate):
         return np.column_stack([2 * n * r * np.sin(np.pi / n) * h, cap, cap])  # sides, bottom, top
 
     @classmethod
-    def sample_components(cls, P, comp, rng):
-        r, h, n = P.T
-        k = len(P)
-        j = np.floor(rng.random(k) * n)  # side / fan triangle index: all equal in area
-        a0 = np.pi / n + 2 * np.pi * j / n
-        a1 = a0 + 2 * np.pi / n
-        v0 = np.column_stack([r * np.cos(a0), r * np.sin(a0)])
-        v1 = np.column_stack([r * np.cos(a1), r * np.sin(a1)])
-        pts = np.empty((k, 3))
-        nrm = np.zeros((k, 3))
-        side = comp == 0
-        t = rng.random(k)[:, None]
-        pts[:, :2] = np.where(side[:, None], v0 + t * (v1 - v0), _fan_point(np.zeros((k, 2)), v0, v1, rng))
-        pts[:, 2] = np.where(side, (rng.random(k) - 0.5) * h, np.where(comp == 2, 0.5, -0.5) * h)
-        mid = (a0 + a1) / 2
-        nrm[:, 0] = np.where(side, np.cos(mid), 0.0)
-        nrm[:, 1] = np.where(side, np.sin(mid), 0.0)
-        nrm[:, 2] = np.where(side, 0.0, np.where(comp == 2, 1.0, -1.0))
-        return pts, nrm
+    def patches(cls, P):
+        out = []
+        # rows are grouped by side count: each n-gon gives n side rects and 2n fan triangles
+        for n in np.unique(P[:, 2]).astype(int):
+            on = (P[:, 2] == n).astype(float)
+            r, h = P[:, 0], P[:, 1]
+            a = (np.pi / n + TWO_PI * np.arange(n) / n)[:, None]
+            x0, y0 = r * np.cos(a), r * np.sin(a)
+            x1, y1 = r * np.cos(a + TWO_PI / n), r * np.sin(a + TWO_PI / n)
+            mid = a + np.pi / n
+            out.append(rects(np.zeros(n, dtype=int), (x0, y0, -h / 2), (x1 - x0, y1 - y0, 0.0), (0.0, 0.0, h),
+                             (np.cos(mid), np.sin(mid), 0.0), scale=on))
+            z = np.concatenate([np.broadcast_to(-h / 2, x0.shape), np.broadcast_to(h / 2, x0.shape)])
+            nz = np.repeat([[-1.0], [1.0]], n, axis=0)
+            out.append(tris(np.repeat([1, 2], n), (0.0, 0.0, z), (np.tile(x0, (2, 1)), np.tile(y0, (2, 1)), 0.0),
+                            (np.tile(x1, (2, 1)), np.tile(y1, (2, 1)), 0.0), (0.0, 0.0, nz), scale=on))
+        return out
 
     @classmethod
     def sdf(cls, p, x):
@@ -82,6 +72,22 @@ class Prism(GeometryTemplate):
     def bounds(cls, p):
         V = cls.polygon(p[0], int(p[2]))
         return np.array([[*V.min(axis=0), -p[1] / 2], [*V.max(axis=0), p[1] / 2]])
+
+    @classmethod
+    def bounds_batch(cls, P):
+        r, h, n = P[:, 0], P[:, 1], P[:, 2]
+        # vertex angles π/n + 2πk/n: the extremes along ±x, ±y are the vertices nearest
+        # to the axis directions, found per row by rounding
+        out = np.empty((len(P), 2, 3))
+        for k, phi in enumerate((np.pi, 1.5 * np.pi)):
+            for j, sgn in ((0, -1.0), (1, 1.0)):
+                target = phi if sgn < 0 else phi - np.pi
+                step = TWO_PI / n
+                i = np.round((target - np.pi / n) / step)
+                out[:, j, k] = r * (np.cos if k == 0 else np.sin)(np.pi / n + i * step)
+        out[:, 0, 2] = -h / 2
+        out[:, 1, 2] = h / 2
+        return out
 
     @classmethod
     def mesh(cls, p, sections=32):
@@ -119,26 +125,17 @@ class TriPrism(GeometryTemplate):
         return np.column_stack([w * d, l1 * d, l2 * d, w * t / 2, w * t / 2])  # 3 sides, bottom, top
 
     @classmethod
-    def sample_components(cls, P, comp, rng):
-        V = cls._verts(P)
-        d = P[:, 3]
-        k = len(P)
-        rows = np.arange(k)
-        e = np.minimum(comp, 2)
-        A = V[rows, e]
-        E = V[rows, (e + 1) % 3] - A
-        side = comp < 3
-        t = rng.random(k)[:, None]
-        tri = _fan_point(V[:, 0], V[:, 1] - V[:, 0], V[:, 2] - V[:, 0], rng)
-        pts = np.empty((k, 3))
-        pts[:, :2] = np.where(side[:, None], A + t * E, tri)
-        pts[:, 2] = np.where(side, (rng.random(k) - 0.5) * d, np.where(comp == 4, 0.5, -0.5) * d)
+    def patches(cls, P):
+        w, t, a, d = P.T
+        V = cls._verts(P).transpose(1, 2, 0)  # (3 vertices, 2, M)
+        E = np.roll(V, -1, axis=0) - V  # the three edges
         L = np.hypot(E[:, 0], E[:, 1])
-        nrm = np.zeros((k, 3))
-        nrm[:, 0] = np.where(side, E[:, 1] / L, 0.0)
-        nrm[:, 1] = np.where(side, -E[:, 0] / L, 0.0)
-        nrm[:, 2] = np.where(side, 0.0, np.where(comp == 4, 1.0, -1.0))
-        return pts, nrm
+        sides = rects((0, 1, 2), (V[:, 0], V[:, 1], -d / 2), (E[:, 0], E[:, 1], 0.0), (0.0, 0.0, d),
+                      (E[:, 1] / L, -E[:, 0] / L, 0.0))
+        zc = np.stack([-d / 2, d / 2])
+        ends = tris((3, 4), (V[0, 0], V[0, 1], zc), (E[0, 0], E[0, 1], 0.0), (-E[2, 0], -E[2, 1], 0.0),
+                    (0.0, 0.0, np.array([[-1.0], [1.0]])))
+        return [sides, ends]
 
     @classmethod
     def sdf(cls, p, x):
@@ -148,6 +145,11 @@ class TriPrism(GeometryTemplate):
     def bounds(cls, p):
         V = cls.polygon(p)
         return np.array([[*V.min(axis=0), -p[3] / 2], [*V.max(axis=0), p[3] / 2]])
+
+    @classmethod
+    def bounds_batch(cls, P):
+        w, t, a, d = P.T
+        return boxes((np.minimum(-w / 2, a), np.minimum(0.0, t), -d / 2), (np.maximum(w / 2, a), np.maximum(0.0, t), d / 2))
 
     @classmethod
     def mesh(cls, p, sections=32):

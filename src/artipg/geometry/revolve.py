@@ -11,6 +11,8 @@ import trimesh
 
 from artipg.geometry.base import (
     TWO_PI,
+    boxes,
+    centred_boxes,
     CollisionPiece,
     GeometryTemplate,
     Primitive,
@@ -18,9 +20,17 @@ from artipg.geometry.base import (
     polygon_sdf,
     wedge_sdf,
 )
+from artipg.geometry.patches import bands, compile_linear, linear, rects, sectors, tori, zones
 from artipg.geometry.transforms import IDENTITY
 
 FULL = TWO_PI
+# patch layouts shared by the solids of revolution: (2, 1) columns broadcast over rows
+_X, _Y = (1.0, 0.0, 0.0), (0.0, 1.0, 0.0)
+_DOWN_UP = np.array([[-1.0], [1.0]])
+_CAP_COMP = (1, 2)
+_WALL_COMP, _INWARD = (0, 1), np.array([[False], [True]])
+_ANNULUS_COMP = (2, 3)
+_END_COMP = (4, 5)
 
 
 def _is_full(arc) -> np.ndarray:
@@ -94,24 +104,6 @@ def revolve_mesh(profile, arc: float = FULL, sections: int = 32, cap_start: bool
     return m
 
 
-def _sample_band(r0, r1, z0, z1, th, rng):
-    """Area-uniform points on conical bands between (r0, z0) and (r1, z1) at angles th."""
-    u = rng.random(len(r0))
-    dr = r1 - r0
-    flat = np.abs(dr) < 1e-12
-    safe = np.where(flat, 1.0, dr)
-    s = np.where(flat, u, (np.sqrt(r0 * r0 + u * (r1 * r1 - r0 * r0)) - r0) / safe)
-    r = r0 + dr * s
-    z = z0 + (z1 - z0) * s
-    c, si = np.cos(th), np.sin(th)
-    pts = np.column_stack([r * c, r * si, z])
-    nz = -dr
-    nr = z1 - z0
-    ln = np.sqrt(nr * nr + nz * nz)
-    nrm = np.column_stack([nr * c / ln, nr * si / ln, nz / ln])
-    return pts, nrm
-
-
 class Frustum(GeometryTemplate):
     """Frustum of a cone along z: radius ``r0`` at z = -h/2, ``r1`` at z = +h/2.
 
@@ -129,20 +121,18 @@ class Frustum(GeometryTemplate):
                                 np.pi * c1 * r1 * r1])
 
     @classmethod
-    def sample_components(cls, P, comp, rng):
-        r0, r1, h, c0, c1 = P.T
-        th = rng.random(len(P)) * TWO_PI
-        pts, nrm = _sample_band(r0, r1, -h / 2, h / 2, th, rng)
-        cap = comp > 0
-        if cap.any():
-            top = comp[cap] == 2
-            rr = np.where(top, r1[cap], r0[cap])
-            x, y = disk(rr, rng)
-            z = np.where(top, 0.5, -0.5) * h[cap]
-            pts[cap] = np.column_stack([x, y, z])
-            nrm[cap] = 0.0
-            nrm[cap, 2] = np.where(top, 1.0, -1.0)
-        return pts, nrm
+    def patches(cls, P):
+        r0, r1, h = P[:, 0], P[:, 1], P[:, 2]
+        caps = linear("sector", _CAP_COMP, P, _FRUSTUM_CAPS, cls.component_areas(P)[:, 1:].T)
+        return [bands(0, r0, r1, -h / 2, h / 2, TWO_PI), caps]
+
+    @staticmethod
+    def _caps(P):
+        """The bottom and top discs (parameters affine in P: compiled once, below)."""
+        r0, r1, h = P[:, 0], P[:, 1], P[:, 2]
+        z = h / 2
+        return sectors(_CAP_COMP, (0.0, 0.0, np.stack([-z, z])), _X, _Y, (0.0, 0.0, _DOWN_UP),
+                       0.0, np.stack([r0, r1]), TWO_PI)
 
     @classmethod
     def _profile(cls, p):
@@ -162,9 +152,7 @@ class Frustum(GeometryTemplate):
     @classmethod
     def bounds_batch(cls, P):
         r = np.maximum(P[:, 0], P[:, 1])
-        h = P[:, 2] / 2
-        lo = np.stack([-r, -r, -h], axis=1)
-        return np.stack([lo, -lo], axis=1)
+        return centred_boxes(r, r, P[:, 2] * 0.5)
 
     @classmethod
     def solid_params(cls, p):
@@ -215,35 +203,28 @@ class Ring(GeometryTemplate):
         return np.column_stack([arc * (ro + tp / 2) * sl, arc * (ri + tp / 2) * sl, bot, top, end, end])
 
     @classmethod
-    def sample_components(cls, P, comp, rng):
+    def patches(cls, P):
         ro, ri, h, arc, tp = P.T
-        k = len(P)
-        th = rng.random(k) * arc
-        inner = comp == 1
-        r0 = np.where(inner, ri, ro)
-        pts, nrm = _sample_band(r0, r0 + tp, -h / 2, h / 2, th, rng)
-        nrm[inner] *= -1.0
-        ann = (comp == 2) | (comp == 3)
-        if ann.any():
-            top = comp[ann] == 3
-            off = np.where(top, tp[ann], 0.0)
-            a_, b_ = ri[ann] + off, ro[ann] + off
-            rho = np.sqrt(a_ * a_ + rng.random(len(a_)) * (b_ * b_ - a_ * a_))
-            ta = th[ann]
-            pts[ann] = np.column_stack([rho * np.cos(ta), rho * np.sin(ta), np.where(top, 0.5, -0.5) * h[ann]])
-            nrm[ann] = 0.0
-            nrm[ann, 2] = np.where(top, 1.0, -1.0)
-        end = comp >= 4
-        if end.any():
-            te = np.where(comp[end] == 4, 0.0, arc[end])
-            u, v = rng.random((2, int(end.sum())))
-            z = (v - 0.5) * h[end]
-            re = ri[end] + u * (ro[end] - ri[end]) + v * tp[end]
-            ce, se = np.cos(te), np.sin(te)
-            pts[end] = np.column_stack([re * ce, re * se, z])
-            sg = np.where(comp[end] == 4, -1.0, 1.0)
-            nrm[end] = np.column_stack([-se * sg, ce * sg, np.zeros(len(te))])
-        return pts, nrm
+        z = h / 2
+        areas = cls.component_areas(P)
+        out = [bands(_WALL_COMP, np.stack([ro, ri]), np.stack([ro + tp, ri + tp]), -z, z, arc, inward=_INWARD),
+               linear("sector", _ANNULUS_COMP, P, _RING_CAPS, areas[:, 2:4].T)]
+        partial = ~_is_full(arc)
+        if partial.any():
+            ends = np.stack([np.zeros_like(arc), arc])
+            ce, se = np.cos(ends), np.sin(ends)
+            sg = np.array([[-1.0], [1.0]])  # the θ = 0 end faces -y, the θ = arc end faces +θ
+            out.append(rects(_END_COMP, (ri * ce, ri * se, -z), ((ro - ri) * ce, (ro - ri) * se, 0.0),
+                             (tp * ce, tp * se, h), (-se * sg, ce * sg, 0.0), scale=partial))
+        return out
+
+    @staticmethod
+    def _caps(P):
+        """The bottom and top annuli (parameters affine in P: compiled once, below)."""
+        ro, ri, h, arc, tp = P.T
+        z = h / 2
+        return sectors(_ANNULUS_COMP, (0.0, 0.0, np.stack([-z, z])), _X, _Y, (0.0, 0.0, _DOWN_UP),
+                       np.stack([ri, ri + tp]), np.stack([ro, ro + tp]), arc)
 
     @staticmethod
     def _profile(p):
@@ -295,24 +276,12 @@ class Sphere(GeometryTemplate):
                                 np.pi * np.maximum(R * R - hi * hi, 0.0)])
 
     @classmethod
-    def sample_components(cls, P, comp, rng):
+    def patches(cls, P):
         R, lo, hi = P.T
-        k = len(P)
-        u, th = rng.random((2, k))
-        th = th * TWO_PI
-        z = lo + u * (hi - lo)  # Archimedes: z is uniform on a sphere zone
-        rho = np.sqrt(np.maximum(R * R - z * z, 0.0))
-        pts = np.column_stack([rho * np.cos(th), rho * np.sin(th), z])
-        nrm = pts / R[:, None]
-        cap = comp > 0
-        if cap.any():
-            top = comp[cap] == 2
-            zc = np.where(top, hi[cap], lo[cap])
-            x, y = disk(np.sqrt(np.maximum(R[cap] ** 2 - zc * zc, 0.0)), rng)
-            pts[cap] = np.column_stack([x, y, zc])
-            nrm[cap] = 0.0
-            nrm[cap, 2] = np.where(top, 1.0, -1.0)
-        return pts, nrm
+        zc = np.stack([lo, hi])
+        caps = sectors(_CAP_COMP, (0.0, 0.0, zc), _X, _Y, (0.0, 0.0, _DOWN_UP), 0.0,
+                       np.sqrt(np.maximum(R * R - zc * zc, 0.0)), TWO_PI)
+        return [zones(0, R, lo, hi), caps]
 
     @classmethod
     def sdf(cls, p, x):
@@ -329,7 +298,7 @@ class Sphere(GeometryTemplate):
     def bounds_batch(cls, P):
         R, lo, hi = P.T
         r = np.where((lo <= 0) & (hi >= 0), R, np.sqrt(np.maximum(R * R - np.minimum(lo * lo, hi * hi), 0.0)))
-        return np.stack([np.stack([-r, -r, lo], 1), np.stack([r, r, hi], 1)], axis=1)
+        return boxes((-r, -r, lo), (r, r, hi))
 
     @classmethod
     def mesh(cls, p, sections=32):
@@ -374,33 +343,17 @@ class Torus(GeometryTemplate):
         return np.column_stack([TWO_PI * r * R * arc, cap * c0 * part, cap * c1 * part])
 
     @classmethod
-    def sample_components(cls, P, comp, rng):
+    def patches(cls, P):
         R, r, arc, c0, c1 = P.T
-        k = len(P)
-        # tube angle v has density ∝ R + r cos v: rejection sampling, vectorised
-        v = np.empty(k)
-        todo = np.arange(k)
-        while len(todo):
-            cand = rng.random(len(todo)) * TWO_PI
-            acc = rng.random(len(todo)) * (R[todo] + r[todo]) <= R[todo] + r[todo] * np.cos(cand)
-            v[todo[acc]] = cand[acc]
-            todo = todo[~acc]
-        th = rng.random(k) * arc
-        cv, sv, ct, st = np.cos(v), np.sin(v), np.cos(th), np.sin(th)
-        rho = R + r * cv
-        pts = np.column_stack([rho * ct, rho * st, r * sv])
-        nrm = np.column_stack([cv * ct, cv * st, sv])
-        cap = comp > 0
-        if cap.any():
-            end = comp[cap] == 2
-            te = np.where(end, arc[cap], 0.0)
-            x, y = disk(r[cap], rng)  # x along ρ, y along z
-            ce, se = np.cos(te), np.sin(te)
-            rr = R[cap] + x
-            pts[cap] = np.column_stack([rr * ce, rr * se, y])
-            sg = np.where(end, 1.0, -1.0)
-            nrm[cap] = np.column_stack([-se * sg, ce * sg, np.zeros(len(te))])
-        return pts, nrm
+        on = ~_is_full(arc) * np.stack([c0, c1])
+        if not on.any():
+            return [tori(0, R, r, arc)]
+        ends = np.stack([np.zeros_like(arc), arc])
+        ce, se = np.cos(ends), np.sin(ends)
+        sg = np.array([[-1.0], [1.0]])
+        caps = sectors(_CAP_COMP, (R * ce, R * se, 0.0), (ce, se, 0.0), (0.0, 0.0, 1.0),
+                       (-se * sg, ce * sg, 0.0), 0.0, r, TWO_PI, scale=on)
+        return [tori(0, R, r, arc), caps]
 
     @classmethod
     def sdf(cls, p, x):
@@ -457,8 +410,7 @@ def _arc_bounds(r_lo, r_hi, arc, z0, z1):
 def _arc_bounds_batch(r_lo, r_hi, arc, z0, z1):
     """Vectorised :func:`_arc_bounds` over rows; returns (M, 2, 3)."""
     if (arc >= FULL - 1e-9).all():  # full turns (the common case): a square footprint
-        lo = np.column_stack([-r_hi, -r_hi, z0])
-        return np.stack([lo, np.column_stack([r_hi, r_hi, z1])], axis=1)
+        return boxes((-r_hi, -r_hi, z0), (r_hi, r_hi, z1))
     arc = np.minimum(arc, FULL)
     cand = np.stack([np.zeros_like(arc), arc, np.full_like(arc, 0.5 * np.pi), np.full_like(arc, np.pi),
                      np.full_like(arc, 1.5 * np.pi)], axis=1)
@@ -468,9 +420,8 @@ def _arc_bounds_batch(r_lo, r_hi, arc, z0, z1):
     xs = np.concatenate([c * r_lo[:, None], c * r_hi[:, None]], axis=1)
     ys = np.concatenate([s * r_lo[:, None], s * r_hi[:, None]], axis=1)
     ok2 = np.concatenate([ok, ok], axis=1)
-    lo = np.stack([np.where(ok2, xs, np.inf).min(1), np.where(ok2, ys, np.inf).min(1), z0], axis=1)
-    hi = np.stack([np.where(ok2, xs, -np.inf).max(1), np.where(ok2, ys, -np.inf).max(1), z1], axis=1)
-    return np.stack([lo, hi], axis=1)
+    return boxes((np.where(ok2, xs, np.inf).min(1), np.where(ok2, ys, np.inf).min(1), z0),
+                 (np.where(ok2, xs, -np.inf).max(1), np.where(ok2, ys, -np.inf).max(1), z1))
 
 
 def _sector_hulls(make, arc, max_step=math.pi / 16):
@@ -518,3 +469,8 @@ def torus(R: float, r: float, arc: float = FULL, pose: np.ndarray = IDENTITY, ro
           caps: tuple[bool, bool] = (True, True)) -> Primitive:
     """Torus (arc) about local z; centre-line radius ``R``, tube radius ``r``."""
     return Primitive(Torus, (float(R), float(r), float(arc), float(caps[0]), float(caps[1])), pose, role)
+
+
+# cap parameters are affine in the template parameters: one matrix product per object
+_FRUSTUM_CAPS = compile_linear(Frustum._caps, len(Frustum.params))
+_RING_CAPS = compile_linear(Ring._caps, len(Ring.params))

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from artipg.geometry.transforms import IDENTITY, translation
@@ -45,8 +47,11 @@ class LinkBuilder:
             raise ValueError("the root link has no joint")
         if type not in JOINT_TYPES:
             raise ValueError(f"joint type must be one of {JOINT_TYPES}, got {type!r}")
-        a = np.asarray(axis, dtype=float)
-        a = a / np.linalg.norm(a)
+        x, y, z = (float(v) for v in axis)
+        norm = math.sqrt(x * x + y * y + z * z)
+        if not norm > 0.0:
+            raise ValueError(f"joint {self.name}: axis must be non-zero, got {axis}")
+        a = np.array((x / norm, y / norm, z / norm))
         lo, hi = float(limits[0]), float(limits[1])
         if type == "continuous":
             lo, hi = -np.inf, np.inf

@@ -9,16 +9,14 @@ name), so adding or removing an optional part never changes the others.
 
 from __future__ import annotations
 
-import zlib
 from dataclasses import dataclass, field
 from graphlib import TopologicalSorter
 from typing import Any, Callable
 
-import numpy as np
-
 from artipg.model.articulation import ArticulatedObject
 from artipg.model.builder import ObjectBuilder
 from artipg.rules.params import ParamRecorder, option_name
+from artipg.rules.streams import stream_key, streams
 
 
 @dataclass(frozen=True)
@@ -74,12 +72,18 @@ class Category:
         {name: weight}.
     slots : tuple of Slot
         The part DAG.
+    fixed_base : bool
+        The object is a fixture, mounted in use (a faucet on a sink, a switch on a
+        wall, a door or window in its wall opening): the simulator check holds its
+        base fixed instead of dropping it on a floor.
     """
 
     name: str
     subcategories: dict
     slots: tuple
+    fixed_base: bool = False
     order: tuple = field(init=False)
+    _keys: tuple = field(init=False, repr=False)
 
     def __post_init__(self):
         names = {s.name for s in self.slots}
@@ -100,18 +104,19 @@ class Category:
                 order.append(by_name[r])
                 ts.done(r)
         object.__setattr__(self, "order", tuple(order))
+        object.__setattr__(self, "_keys", tuple(stream_key(s.name) for s in order))
 
     def generate(self, seed: int, overrides: dict | None = None) -> ArticulatedObject:
         """Build the object for ``seed`` (with optional parameter overrides)."""
         record: dict = {}
         templates: dict = {}
-        top = ParamRecorder(np.random.default_rng([seed, 0]), record, overrides)
-        sub = top.choice("subcategory", self.subcategories)
-        builder = ObjectBuilder(record)
-        out: dict = {}
-        for slot in self.order:
-            rng = np.random.default_rng([seed, zlib.crc32(slot.name.encode())])
-            ctx = SlotContext(ParamRecorder(rng, record, overrides, slot.name), sub, out, builder,
-                              templates, slot.name)
-            out[slot.name] = slot.build(ctx)
+        with streams(seed) as st:
+            top = ParamRecorder(st.open(0), record, overrides)
+            sub = top.choice("subcategory", self.subcategories)
+            builder = ObjectBuilder(record)
+            out: dict = {}
+            for slot, key in zip(self.order, self._keys):
+                ctx = SlotContext(ParamRecorder(st.open(key), record, overrides, slot.name), sub, out,
+                                  builder, templates, slot.name)
+                out[slot.name] = slot.build(ctx)
         return builder.build(self.name, sub, seed, record, templates)

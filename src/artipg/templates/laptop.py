@@ -73,8 +73,10 @@ def laptop_base(p, width: float, depth: float, thickness: float, holes=()) -> Pa
                 regions={"lift": Region(("body",))})
 
 
-def _keyboard(template, prims, w, d, h, plate) -> Part:
-    top = np.array([[-d / 2, -w / 2, h - 1e-4], [d / 2, w / 2, h + 1e-4]])
+def _keyboard(template, prims, w, d, h, plate, key_top=None) -> Part:
+    """The keyboard part; ``press`` covers the key tops at ``key_top`` (default ``h``)."""
+    kt = h if key_top is None else key_top
+    top = np.array([[-d / 2, -w / 2, kt - 1e-4], [d / 2, w / 2, kt + 1e-4]])
     prims.append(cuboid(d, w, plate, translation(0, 0, -plate / 2), role="plate"))
     return Part("keyboard", template, prims, anchors={"top": (0.0, 0.0, h)}, regions={"press": Region(("key",), top)})
 
@@ -118,7 +120,7 @@ def well_keyboard(p, width: float, depth: float, height: float, plate: float) ->
     prims = [rect_ring(depth, width, height, depth - 2 * band, width - 2 * band, translation(0, 0, height / 2),
                        role="surround"),
              cuboid(depth - 2 * band, width - 2 * band, 0.7 * height, translation(0, 0, 0.35 * height), role="key")]
-    return _keyboard("well_keyboard", prims, width, depth, height, plate)
+    return _keyboard("well_keyboard", prims, width, depth, height, plate, key_top=0.7 * height)
 
 
 KEYBOARDS = {block_keyboard: 2.0, row_keyboard: 1.5, well_keyboard: 1.0}

@@ -80,14 +80,18 @@ def domed_lid(p, radius: float, sides: int | None = None) -> Part:
 
 
 def _knob(p, z0: float):
-    """A lid knob standing on z0: stem and a cap; returns prims, top z, grasp."""
+    """A lid knob standing on z0: stem and a cap; returns prims, top z and grasps: from
+    above, and from the side (-y) for when a handle arches over the lid."""
     rs = p.uniform("stem_radius", 0.006, 0.012)
     hs = p.uniform("stem_height", 0.008, 0.02)
     rk = p.uniform("knob_radius", 1.3, 2.2) * rs
     hk = p.uniform("knob_height", 0.01, 0.02)
     prims = [cylinder(rs, hs + 0.001, translation(0, 0, z0 + hs / 2 - 0.0005), role="stem"),
              cylinder(rk, hk, translation(0, 0, z0 + hs + hk / 2), role="knob")]
-    return prims, z0 + hs + hk, top_grasp(0.0, 0.0, z0 + hs + hk / 2, 2 * rk + 0.02, "x")
+    zc = z0 + hs + hk / 2
+    side = np.array([[0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 1.0, 0.0], [1.0, 0.0, 0.0, zc], [0.0, 0.0, 0.0, 1.0]])
+    grasps = [top_grasp(0.0, 0.0, zc, 2 * rk + 0.02, "x"), Grasp(side, 2 * rk + 0.02, np.array([0.0, 0.0, 1.0]))]
+    return prims, z0 + hs + hk, grasps
 
 
 def knobbed_lid(p, radius: float, sides: int | None = None) -> Part:
@@ -100,8 +104,8 @@ def knobbed_lid(p, radius: float, sides: int | None = None) -> Part:
         Rs = (a * a + hd * hd) / (2 * hd)
         prims.append(sphere(Rs, Rs - hd, Rs, translation(0, 0, t - Rs + hd), role="dome"))
         z0 = t + hd - 0.001
-    kp, top, g = _knob(p, z0)
-    return _lid("knobbed_lid", prims + kp, R, t, s, top, sides, grip_roles=("knob",), grasps=[g])
+    kp, top, grasps = _knob(p, z0)
+    return _lid("knobbed_lid", prims + kp, R, t, s, top, sides, grip_roles=("knob",), grasps=grasps)
 
 
 def bridge_lid(p, radius: float, sides: int | None = None) -> Part:
