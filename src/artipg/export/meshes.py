@@ -19,9 +19,9 @@ from __future__ import annotations
 import numpy as np
 import trimesh
 
-from artipg.geometry.base import CollisionPiece
 from artipg.geometry.box import Cuboid, RectRing
-from artipg.geometry.revolve import Frustum, Ring, Sphere, Torus, revolve_mesh
+from artipg.geometry.revolve import Frustum, Sphere
+
 
 #: Densities (kg/m^3) of the material classes.
 CLASS_DENSITY = {
@@ -66,12 +66,27 @@ def obj_text(vertices: np.ndarray, faces: np.ndarray) -> str:
     return v + f
 
 
-def link_visual_mesh(link, sections: int = 24) -> trimesh.Trimesh | None:
-    """All primitives of ``link`` as one mesh in the link frame (None if empty)."""
-    meshes = [prim.placed(part.pose).mesh(sections) for part in link.parts for prim in part.primitives]
-    if not meshes:
+def link_visual_arrays(link, sections: int = 24) -> tuple[np.ndarray, np.ndarray] | None:
+    """All primitives of ``link`` as one mesh in the link frame: vertices (V, 3) and
+    faces (F, 3), or None if the link is empty."""
+    verts, faces = [], []
+    n = 0
+    for part in link.parts:
+        for prim in part.primitives:
+            V, F = prim.geom.mesh_arrays(prim.params, sections)
+            T = part.pose @ prim.pose
+            verts.append(V @ T[:3, :3].T + T[:3, 3])
+            faces.append(F + n)
+            n += len(V)
+    if not verts:
         return None
-    return trimesh.util.concatenate(meshes)
+    return np.concatenate(verts), np.concatenate(faces)
+
+
+def link_visual_mesh(link, sections: int = 24) -> trimesh.Trimesh | None:
+    """:func:`link_visual_arrays` as a ``trimesh.Trimesh`` (None if the link is empty)."""
+    arrays = link_visual_arrays(link, sections)
+    return None if arrays is None else trimesh.Trimesh(*arrays, process=False)
 
 
 def link_collision_pieces(link):
@@ -80,53 +95,8 @@ def link_collision_pieces(link):
     for part in link.parts:
         for prim in part.primitives:
             T = part.pose @ prim.pose
-            for piece in primitive_collision(prim.geom, prim.params):
+            for piece in prim.geom.collision(prim.params):
                 out.append((piece, T @ piece.pose))
-    return out
-
-
-#: Largest gap (metres) between a curved surface and the flat faces of the convex
-#: sectors that replace it: sets how many sectors a ring or torus is cut into.
-SECTOR_SAGITTA = 5e-4
-
-
-def primitive_collision(geom, params) -> list:
-    """Convex pieces of one primitive (its local frame).
-
-    Rings and tori are cut into as few convex sectors as keep the hull of each
-    sector within :data:`SECTOR_SAGITTA` of the concave side (8 to 48 per turn):
-    a small bottle collar needs far fewer pieces than a bucket wall, and every piece
-    costs simulators time. Other templates use their own
-    :meth:`~artipg.geometry.GeometryTemplate.collision`.
-    """
-    p = tuple(float(v) for v in params)
-    if geom is Ring:
-        ro, ri, h, arc, tp = p
-        prof = np.array([[ri, -h / 2], [ro, -h / 2], [ro + tp, h / 2], [ri + tp, h / 2]])
-        return _sectors(prof, arc, min(ri, ri + tp))
-    if geom is Torus:
-        R, r, arc = p[0], p[1], p[2]
-        a = np.linspace(0.0, 2 * np.pi, 16, endpoint=False)
-        prof = np.stack([R + r * np.cos(a), r * np.sin(a)], axis=1)
-        return _sectors(prof, arc, R - r)
-    return geom.collision(params)
-
-
-def _sectors(profile: np.ndarray, arc: float, r_concave: float) -> list:
-    """Convex hulls of equal sectors of ``profile`` revolved over ``arc`` radians."""
-    arc = min(float(arc), 2 * np.pi)
-    r = max(float(r_concave), 1e-6)
-    step = 2.0 * np.arccos(max(-1.0, 1.0 - SECTOR_SAGITTA / r))
-    n_turn = int(np.clip(np.ceil(2 * np.pi / step), 8, 48))
-    n = max(1, int(np.ceil(arc / (2 * np.pi / n_turn) - 1e-9)))
-    a = arc / n
-    base = revolve_mesh(profile, arc=a, sections=max(2, int(np.ceil(2 * np.pi / a)))).convex_hull
-    V, F = np.asarray(base.vertices), np.asarray(base.faces)
-    out = []
-    for i in range(n):
-        c, s_ = np.cos(i * a), np.sin(i * a)
-        Rz = np.array([[c, -s_, 0.0], [s_, c, 0.0], [0.0, 0.0, 1.0]])
-        out.append(CollisionPiece("mesh", vertices=V @ Rz.T, faces=F))
     return out
 
 
@@ -160,11 +130,12 @@ def primitive_mass_properties(geom, params, sections: int = 24) -> tuple[float, 
     if geom is Sphere and p[1] <= -p[0] and p[2] >= p[0]:
         R = p[0]
         return 4.0 / 3.0 * np.pi * R ** 3, np.zeros(3), np.eye(3) * (0.4 * R * R)
-    m = geom.mesh(geom.solid_params(p), sections=sections)
-    vol = abs(float(m.volume))
+    V, F = geom.mesh_arrays(geom.solid_params(p), sections=sections)
+    props = trimesh.triangles.mass_properties(V[F], density=1.0)
+    vol = abs(float(props.volume))
     if vol <= 0:
         return 0.0, np.zeros(3), np.zeros((3, 3))
-    return vol, np.asarray(m.center_mass), np.asarray(m.moment_inertia) / m.mass
+    return vol, np.asarray(props.center_mass), np.asarray(props.inertia) / props.mass
 
 
 def link_inertial(link, sections: int = 24) -> tuple[float, np.ndarray, np.ndarray]:

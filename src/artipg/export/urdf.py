@@ -11,7 +11,7 @@ import xml.etree.ElementTree as ET
 
 import numpy as np
 
-from artipg.export.meshes import link_collision_pieces, link_inertial, link_visual_mesh, obj_text
+from artipg.export.meshes import link_collision_pieces, link_inertial, link_visual_arrays, obj_text
 from artipg.geometry.transforms import matrix_to_rpy
 
 
@@ -61,10 +61,10 @@ def build_urdf(obj, sections: int = 24, visuals: bool = True) -> tuple[ET.Elemen
         ET.SubElement(inertial, "mass", value=f"{mass:.9g}")
         ET.SubElement(inertial, "inertia", ixx=f"{I[0, 0]:.9g}", ixy=f"{I[0, 1]:.9g}", ixz=f"{I[0, 2]:.9g}",
                       iyy=f"{I[1, 1]:.9g}", iyz=f"{I[1, 2]:.9g}", izz=f"{I[2, 2]:.9g}")
-        vm = link_visual_mesh(link, sections) if visuals else None
+        vm = link_visual_arrays(link, sections) if visuals else None
         if vm is not None:
             path = f"meshes/{link.name}.obj"
-            files[path] = obj_text(vm.vertices, vm.faces)
+            files[path] = obj_text(*vm)
             vis = ET.SubElement(el, "visual", name=f"{link.name}_visual")
             _origin(vis, np.eye(4))
             ET.SubElement(ET.SubElement(vis, "geometry"), "mesh", filename=path)

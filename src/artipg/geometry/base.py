@@ -18,6 +18,7 @@ from dataclasses import dataclass, field
 from typing import ClassVar, NamedTuple
 
 import numpy as np
+from scipy.spatial import ConvexHull
 
 from artipg.geometry.patches import sample_family
 from artipg.geometry.transforms import IDENTITY, apply
@@ -106,14 +107,23 @@ class GeometryTemplate:
         return tuple(p)
 
     @classmethod
-    def mesh(cls, p, sections: int = 32):  # pragma: no cover - abstract
+    def mesh_arrays(cls, p, sections: int = 32) -> tuple[np.ndarray, np.ndarray]:  # pragma: no cover - abstract
+        """Vertices (V, 3) and outward triangles (F, 3) of a watertight mesh (local frame);
+        curved surfaces use ``sections`` segments per full turn."""
         raise NotImplementedError
+
+    @classmethod
+    def mesh(cls, p, sections: int = 32):
+        """:meth:`mesh_arrays` as a ``trimesh.Trimesh``."""
+        import trimesh
+
+        return trimesh.Trimesh(*cls.mesh_arrays(p, sections), process=False)
 
     @classmethod
     def collision(cls, p) -> list[CollisionPiece]:
         """Convex pieces; default: the convex hull of the mesh (exact for convex solids)."""
-        m = cls.mesh(p, sections=24).convex_hull
-        return [CollisionPiece("mesh", vertices=np.asarray(m.vertices), faces=np.asarray(m.faces))]
+        V, F = convex_hull(cls.mesh_arrays(p, sections=24)[0])
+        return [CollisionPiece("mesh", vertices=V, faces=F)]
 
     @classmethod
     def volume(cls, p) -> float:
@@ -193,6 +203,21 @@ def boxes(lo, hi) -> np.ndarray:
 def centred_boxes(hx, hy, hz) -> np.ndarray:
     """Boxes (M, 2, 3) centred on the origin with half extents ``hx``, ``hy``, ``hz``."""
     return boxes((-hx, -hy, -hz), (hx, hy, hz))
+
+
+def convex_hull(points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Vertices (V, 3) and outward triangles (F, 3) of the convex hull of ``points``."""
+    hull = ConvexHull(points)
+    V = points[hull.vertices]
+    remap = np.full(len(points), -1, dtype=np.int64)
+    remap[hull.vertices] = np.arange(len(hull.vertices))
+    F = remap[hull.simplices]
+    # qhull's simplices are unoriented: flip those whose normal opposes the facet's
+    tri = V[F]
+    n = np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])
+    flip = np.einsum("ij,ij->i", n, hull.equations[:, :3]) < 0
+    F[flip] = F[flip][:, ::-1]
+    return V, F
 
 
 # ---------------------------------------------------------------- sampling helpers

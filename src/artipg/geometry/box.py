@@ -29,6 +29,24 @@ def _box_tables():
 
 
 _BOX_TABLE = _box_tables()
+_UNIT_BOX = (np.asarray(trimesh.creation.box().vertices), np.asarray(trimesh.creation.box().faces, dtype=np.int64))
+
+
+def _frame_faces() -> np.ndarray:
+    """Triangles (32, 3) of a rectangular frame with vertices: top outer 0-3, top inner
+    4-7, bottom outer 8-11, bottom inner 12-15 (corners counter-clockwise from +x+y)."""
+    k = np.arange(4)
+    k1 = (k + 1) % 4
+    ot, it, ob, ib = k, 4 + k, 8 + k, 12 + k
+    ot1, it1, ob1, ib1 = k1, 4 + k1, 8 + k1, 12 + k1
+    top = [np.stack([ot, ot1, it1], 1), np.stack([ot, it1, it], 1)]
+    bottom = [f[:, ::-1] + 8 for f in top]
+    outer = [np.stack([ot, ob, ob1], 1), np.stack([ot, ob1, ot1], 1)]
+    inner = [f[:, ::-1] + 4 for f in outer]
+    return np.concatenate(top + bottom + outer + inner).astype(np.int64)
+
+
+_FRAME_FACES = _frame_faces()
 _BOX_COMP = np.arange(6)
 
 
@@ -72,8 +90,8 @@ class Cuboid(GeometryTemplate):
         return np.stack([-h, h], axis=1)
 
     @classmethod
-    def mesh(cls, p, sections=32):
-        return trimesh.creation.box(extents=p)
+    def mesh_arrays(cls, p, sections=32):
+        return _UNIT_BOX[0] * np.asarray(p[:3], dtype=float), _UNIT_BOX[1]
 
     @classmethod
     def volume(cls, p):
@@ -136,9 +154,12 @@ class RectRing(GeometryTemplate):
         ]
 
     @classmethod
-    def mesh(cls, p, sections=32):
-        boxes = [trimesh.creation.box(extents=s, transform=T) for s, T in cls.pieces(p)]
-        return trimesh.boolean.union(boxes, engine="manifold")
+    def mesh_arrays(cls, p, sections=32):
+        ox, oy, d, ix, iy = (float(v) for v in p)
+        xy = np.array([[ox, oy], [-ox, oy], [-ox, -oy], [ox, -oy],   # outer corners, counter-clockwise
+                       [ix, iy], [-ix, iy], [-ix, -iy], [ix, -iy]]) / 2  # inner corners
+        V = np.concatenate([np.column_stack([xy, np.full(8, d / 2)]), np.column_stack([xy, np.full(8, -d / 2)])])
+        return V, _FRAME_FACES
 
     @classmethod
     def volume(cls, p):

@@ -142,6 +142,7 @@ def linear(family: str, comp, P: np.ndarray, table: np.ndarray, area: np.ndarray
 # Each takes the parameters gathered per point, (p, k), and returns (6, k): x y z nx ny nz.
 
 def _affine(q, u, v):
+    """Points ``o + u a + v b`` with normal n from rows o a b n of ``q``."""
     out = np.empty((6, len(u)))
     out[0:3] = q[0:3] + u * q[3:6] + v * q[6:9]
     out[3:6] = q[9:12]
@@ -164,12 +165,7 @@ def _sector(q, rng):
     r0, r1, arc = q[12], q[13], q[14]
     rho = np.sqrt(r0 * r0 + s * (r1 * r1 - r0 * r0))
     phi = t * arc
-    c = rho * np.cos(phi)
-    d = rho * np.sin(phi)
-    out = np.empty((6, len(s)))
-    out[0:3] = q[0:3] + c * q[3:6] + d * q[6:9]
-    out[3:6] = q[9:12]
-    return out
+    return _affine(q, rho * np.cos(phi), rho * np.sin(phi))
 
 
 def _band(q, rng):

@@ -6,8 +6,6 @@ from __future__ import annotations
 import math
 
 import numpy as np
-import trimesh
-from shapely.geometry import Polygon
 
 from artipg.geometry.base import TWO_PI, GeometryTemplate, Primitive, boxes, polygon_sdf
 from artipg.geometry.patches import rects, tris
@@ -20,10 +18,22 @@ def _extrusion_sdf(poly: np.ndarray, depth: float, x: np.ndarray) -> np.ndarray:
     return np.maximum(polygon_sdf(x[:, :2], poly), np.abs(x[:, 2]) - depth / 2)
 
 
-def _extrusion_mesh(poly: np.ndarray, depth: float) -> trimesh.Trimesh:
-    m = trimesh.creation.extrude_polygon(Polygon(poly), depth)
-    m.apply_translation((0.0, 0.0, -depth / 2))
-    return m
+def _extrusion_arrays(poly: np.ndarray, depth: float) -> tuple[np.ndarray, np.ndarray]:
+    """Vertices and outward faces of a convex polygon (n, 2) extruded ``depth`` along z,
+    centred on z = 0."""
+    poly = np.asarray(poly, dtype=float)
+    x, y = poly[:, 0], poly[:, 1]
+    if np.sum(x * np.roll(y, -1) - np.roll(x, -1) * y) < 0:  # make it counter-clockwise
+        poly = poly[::-1]
+    n = len(poly)
+    V = np.concatenate([np.column_stack([poly, np.full(n, -depth / 2)]), np.column_stack([poly, np.full(n, depth / 2)])])
+    i = np.arange(1, n - 1)
+    k = np.arange(n)
+    k1 = (k + 1) % n
+    F = np.concatenate([np.stack([np.zeros_like(i), i + 1, i], 1),  # bottom fan, facing -z
+                        np.stack([np.full_like(i, n), n + i, n + i + 1], 1),  # top fan
+                        np.stack([k, k1, n + k1], 1), np.stack([k, n + k1, n + k], 1)])  # sides
+    return V, F.astype(np.int64)
 
 
 class Prism(GeometryTemplate):
@@ -90,8 +100,8 @@ class Prism(GeometryTemplate):
         return out
 
     @classmethod
-    def mesh(cls, p, sections=32):
-        return _extrusion_mesh(cls.polygon(p[0], int(p[2])), p[1])
+    def mesh_arrays(cls, p, sections=32):
+        return _extrusion_arrays(cls.polygon(p[0], int(p[2])), p[1])
 
     @classmethod
     def volume(cls, p):
@@ -152,8 +162,8 @@ class TriPrism(GeometryTemplate):
         return boxes((np.minimum(-w / 2, a), np.minimum(0.0, t), -d / 2), (np.maximum(w / 2, a), np.maximum(0.0, t), d / 2))
 
     @classmethod
-    def mesh(cls, p, sections=32):
-        return _extrusion_mesh(cls.polygon(p), p[3])
+    def mesh_arrays(cls, p, sections=32):
+        return _extrusion_arrays(cls.polygon(p), p[3])
 
     @classmethod
     def volume(cls, p):

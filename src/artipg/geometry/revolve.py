@@ -11,6 +11,7 @@ import trimesh
 
 from artipg.geometry.base import (
     TWO_PI,
+    convex_hull,
     boxes,
     centred_boxes,
     CollisionPiece,
@@ -37,9 +38,9 @@ def _is_full(arc) -> np.ndarray:
     return np.asarray(arc) >= TWO_PI - 1e-9
 
 
-def revolve_mesh(profile, arc: float = FULL, sections: int = 32, cap_start: bool = True,
-                 cap_end: bool = True, closed_profile: bool = True) -> trimesh.Trimesh:
-    """Mesh of a (ρ, z) profile revolved about z from θ = 0 to θ = ``arc``.
+def revolve_arrays(profile, arc: float = FULL, sections: int = 32, cap_start: bool = True,
+                   cap_end: bool = True, closed_profile: bool = True) -> tuple[np.ndarray, np.ndarray]:
+    """Vertices and faces of a (ρ, z) profile revolved about z from θ = 0 to θ = ``arc``.
 
     Parameters
     ----------
@@ -57,8 +58,10 @@ def revolve_mesh(profile, arc: float = FULL, sections: int = 32, cap_start: bool
 
     Returns
     -------
-    trimesh.Trimesh
-        Outward-oriented mesh (watertight for closed profiles and full or capped arcs).
+    vertices : (V, 3) float64
+    faces : (F, 3) int64
+        Outward-oriented triangles without degenerate faces or unused vertices
+        (watertight for closed profiles and full or capped arcs).
     """
     prof = np.asarray(profile, dtype=float)
     full = arc >= TWO_PI - 1e-9
@@ -67,41 +70,49 @@ def revolve_mesh(profile, arc: float = FULL, sections: int = 32, cap_start: bool
     th = np.linspace(0.0, arc, n_sec + 1)[:n_th]
     P = len(prof)
     rho, z = prof[:, 0], prof[:, 1]
-    V = np.stack(
-        [rho[None, :] * np.cos(th)[:, None], rho[None, :] * np.sin(th)[:, None],
-         np.broadcast_to(z, (n_th, P))], axis=2).reshape(-1, 3)
+    V = np.empty((n_th, P, 3))
+    V[..., 0] = rho[None, :] * np.cos(th)[:, None]
+    V[..., 1] = rho[None, :] * np.sin(th)[:, None]
+    V[..., 2] = z[None, :]
+    # every section's copy of an on-axis profile vertex is replaced by the first one
+    idx = np.arange(n_th * P).reshape(n_th, P)
+    axis = rho <= 0.0
+    idx[:, axis] = idx[0, axis]
     n_edges = P if closed_profile else P - 1
     i = np.arange(n_edges)
     i1 = (i + 1) % P
     j = np.arange(n_sec)
     j1 = (j + 1) % n_th
-    a = (j[:, None] * P + i[None]).ravel()
-    b = (j[:, None] * P + i1[None]).ravel()
-    c = (j1[:, None] * P + i1[None]).ravel()
-    d = (j1[:, None] * P + i[None]).ravel()
+    a, b = idx[j][:, i].ravel(), idx[j][:, i1].ravel()
+    c, d = idx[j1][:, i1].ravel(), idx[j1][:, i].ravel()
     faces = [np.stack([a, c, b], 1), np.stack([a, d, c], 1)]
-    verts = [V]
+    verts = V.reshape(-1, 3)
     if not full:
+        # a counter-clockwise profile makes the fan (centre, v_k, v_k+1) face -θ at θ = 0
+        ccw = float(np.sum(prof[:, 0] * np.roll(prof[:, 1], -1) - np.roll(prof[:, 0], -1) * prof[:, 1])) > 0
         centroid = prof.mean(axis=0)
-        for on, jj, sign in ((cap_start, 0, -1.0), (cap_end, n_th - 1, 1.0)):
+        extra = []
+        for on, jj, start in ((cap_start, 0, True), (cap_end, n_th - 1, False)):
             if not on:
                 continue
             t = th[jj]
-            cidx = len(np.concatenate(verts))
-            verts.append(np.array([[centroid[0] * math.cos(t), centroid[0] * math.sin(t), centroid[1]]]))
-            ring = jj * P + np.arange(P)
+            cidx = len(verts) + len(extra)
+            extra.append([centroid[0] * math.cos(t), centroid[0] * math.sin(t), centroid[1]])
+            ring = idx[jj]
             tri = np.stack([np.full(P, cidx), ring, np.roll(ring, -1)], 1)
-            # orient along the outward normal of the cut plane
-            Vall = np.concatenate(verts)
-            nrm = np.cross(Vall[tri[0, 1]] - Vall[tri[0, 0]], Vall[tri[0, 2]] - Vall[tri[0, 0]])
-            want = sign * np.array([-math.sin(t), math.cos(t), 0.0])
-            if np.dot(nrm, want) < 0:
-                tri = tri[:, ::-1]
-            faces.append(tri)
-    m = trimesh.Trimesh(np.concatenate(verts), np.concatenate(faces), process=True)
-    m.update_faces(m.nondegenerate_faces())
-    m.remove_unreferenced_vertices()
-    return m
+            faces.append(tri if start == ccw else tri[:, ::-1])
+        verts = np.concatenate([verts, np.array(extra).reshape(-1, 3)])
+    F = np.concatenate(faces)
+    F = F[(F[:, 0] != F[:, 1]) & (F[:, 1] != F[:, 2]) & (F[:, 0] != F[:, 2])]
+    used, F = np.unique(F, return_inverse=True)
+    return verts[used], F.reshape(-1, 3).astype(np.int64)
+
+
+def revolve_mesh(profile, arc: float = FULL, sections: int = 32, cap_start: bool = True,
+                 cap_end: bool = True, closed_profile: bool = True) -> trimesh.Trimesh:
+    """:func:`revolve_arrays` as a ``trimesh.Trimesh``."""
+    return trimesh.Trimesh(*revolve_arrays(profile, arc, sections, cap_start, cap_end, closed_profile),
+                           process=False)
 
 
 class Frustum(GeometryTemplate):
@@ -159,14 +170,14 @@ class Frustum(GeometryTemplate):
         return (p[0], p[1], p[2], 1.0, 1.0)
 
     @classmethod
-    def mesh(cls, p, sections=32):
+    def mesh_arrays(cls, p, sections=32):
         r0, r1, h, c0, c1 = p
         prof = [[r0, -h / 2], [r1, h / 2]]
         if c1:
             prof.append([0.0, h / 2])
         if c0:
             prof.insert(0, [0.0, -h / 2])
-        return revolve_mesh(prof, sections=sections, closed_profile=bool(c0 and c1))
+        return revolve_arrays(prof, sections=sections, closed_profile=bool(c0 and c1))
 
     @classmethod
     def volume(cls, p):
@@ -247,8 +258,8 @@ class Ring(GeometryTemplate):
         return _arc_bounds_batch(np.minimum(ri, ri + tp), np.maximum(ro, ro + tp), arc, -h / 2, h / 2)
 
     @classmethod
-    def mesh(cls, p, sections=32):
-        return revolve_mesh(cls._profile(p), arc=min(p[3], FULL), sections=sections)
+    def mesh_arrays(cls, p, sections=32):
+        return revolve_arrays(cls._profile(p), arc=min(p[3], FULL), sections=sections)
 
     @classmethod
     def volume(cls, p):
@@ -258,8 +269,8 @@ class Ring(GeometryTemplate):
 
     @classmethod
     def collision(cls, p):
-        prof = cls._profile(p)
-        return _sector_hulls(lambda a: revolve_mesh(prof, arc=a, sections=int(TWO_PI / a) + 1), p[3])
+        ro, ri, h, arc, tp = (float(v) for v in p)
+        return sector_hulls(cls._profile(p), arc, min(ri, ri + tp))
 
 
 class Sphere(GeometryTemplate):
@@ -301,7 +312,7 @@ class Sphere(GeometryTemplate):
         return boxes((-r, -r, lo), (r, r, hi))
 
     @classmethod
-    def mesh(cls, p, sections=32):
+    def mesh_arrays(cls, p, sections=32):
         R, lo, hi = p
         a0, a1 = math.asin(max(-1.0, lo / R)), math.asin(min(1.0, hi / R))
         n = max(4, int(sections * (a1 - a0) / math.pi) + 1)
@@ -313,7 +324,7 @@ class Sphere(GeometryTemplate):
             prof.append(np.array([0.0, hi]))
         if prof[0][0] > 0:
             prof.insert(0, np.array([0.0, lo]))
-        return revolve_mesh(prof, sections=sections)
+        return revolve_arrays(prof, sections=sections)
 
     @classmethod
     def volume(cls, p):
@@ -383,10 +394,10 @@ class Torus(GeometryTemplate):
         return np.stack([R + r * np.cos(a), r * np.sin(a)], axis=1)
 
     @classmethod
-    def mesh(cls, p, sections=32):
+    def mesh_arrays(cls, p, sections=32):
         R, r, arc, c0, c1 = p
-        return revolve_mesh(cls._profile(p, sections), arc=min(arc, FULL), sections=sections,
-                            cap_start=bool(c0), cap_end=bool(c1))
+        return revolve_arrays(cls._profile(p, sections), arc=min(arc, FULL), sections=sections,
+                              cap_start=bool(c0), cap_end=bool(c1))
 
     @classmethod
     def volume(cls, p):
@@ -395,7 +406,8 @@ class Torus(GeometryTemplate):
 
     @classmethod
     def collision(cls, p):
-        return _sector_hulls(lambda a: revolve_mesh(cls._profile(p, 16), arc=a, sections=int(TWO_PI / a) + 1), p[2])
+        R, r, arc = float(p[0]), float(p[1]), float(p[2])
+        return sector_hulls(cls._profile(p, 32), arc, R - r)
 
 
 def _arc_bounds(r_lo, r_hi, arc, z0, z1):
@@ -424,17 +436,29 @@ def _arc_bounds_batch(r_lo, r_hi, arc, z0, z1):
                  (np.where(ok2, xs, -np.inf).max(1), np.where(ok2, ys, -np.inf).max(1), z1))
 
 
-def _sector_hulls(make, arc, max_step=math.pi / 16):
-    """Split a swept solid into convex hulls of sectors of at most ``max_step`` radians."""
+#: Largest gap (metres) between a curved surface and the flat faces of the convex
+#: sectors that replace it in collision geometry: sets how many sectors a ring or torus
+#: is cut into (8 to 48 per turn), so a bottle collar needs far fewer pieces than a
+#: bucket wall (every piece costs simulators time).
+SECTOR_SAGITTA = 5e-4
+
+
+def sector_hulls(profile: np.ndarray, arc: float, r_concave: float) -> list[CollisionPiece]:
+    """Convex hulls of equal sectors of ``profile`` (ρ, z) revolved over ``arc`` radians,
+    as few as keep each hull within :data:`SECTOR_SAGITTA` of the concave side at
+    radius ``r_concave``."""
     arc = min(float(arc), FULL)
-    n = max(1, int(math.ceil(arc / max_step)))
-    step = arc / n
-    base = make(step).convex_hull
+    r = max(float(r_concave), 1e-6)
+    step = 2.0 * math.acos(max(-1.0, 1.0 - SECTOR_SAGITTA / r))
+    n_turn = int(np.clip(math.ceil(FULL / step), 8, 48))
+    n = max(1, int(math.ceil(arc / (FULL / n_turn) - 1e-9)))
+    a = arc / n
+    V, F = convex_hull(revolve_arrays(profile, arc=a, sections=max(2, int(math.ceil(FULL / a))))[0])
     out = []
     for i in range(n):
-        c, s = math.cos(i * step), math.sin(i * step)
-        Rz = np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
-        out.append(CollisionPiece("mesh", vertices=np.asarray(base.vertices) @ Rz.T, faces=np.asarray(base.faces)))
+        c, s_ = math.cos(i * a), math.sin(i * a)
+        Rz = np.array([[c, -s_, 0.0], [s_, c, 0.0], [0.0, 0.0, 1.0]])
+        out.append(CollisionPiece("mesh", vertices=V @ Rz.T, faces=F))
     return out
 
 
