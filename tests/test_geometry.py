@@ -144,3 +144,14 @@ def test_linear_patch_tables_match_their_builders():
         c, p, _ = table.shape
         fast = (table.reshape(c * p, -1)[:, :-1] @ P.T + table.reshape(c * p, -1)[:, -1:]).reshape(c, p, len(P))
         np.testing.assert_allclose(fast, geom._caps(P).params, rtol=1e-12, atol=1e-15)
+
+
+def test_cylinder_sdf_fast_path_matches_the_profile_distance():
+    from artipg.geometry.base import polygon_sdf
+    from artipg.geometry.revolve import Frustum
+
+    rng = np.random.default_rng(2)
+    p = (0.05, 0.05, 0.2, 1.0, 1.0)
+    x = rng.uniform(-0.2, 0.2, (4000, 3))
+    q = np.stack([np.hypot(x[:, 0], x[:, 1]), x[:, 2]], axis=1)
+    np.testing.assert_allclose(Frustum.sdf(p, x), polygon_sdf(q, Frustum._profile(p)), atol=1e-12)

@@ -24,7 +24,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from artipg.annotate.sdf import object_sdf
+from artipg.annotate.sdf import primitive_params
 
 
 @dataclass(frozen=True)
@@ -75,12 +75,21 @@ def box_surface_grid(boxes: np.ndarray, spacing: float) -> tuple[np.ndarray, np.
     pts, idx = [], []
     for b, (lo, hi) in enumerate(boxes):
         n = np.maximum(2, np.ceil((hi - lo) / spacing).astype(int) + 1)
-        ijk = np.stack(np.meshgrid(*[np.arange(k) for k in n], indexing="ij"), axis=-1).reshape(-1, 3)
-        on_face = np.any((ijk == 0) | (ijk == n - 1), axis=1)
-        g = lo + ijk[on_face] / (n - 1) * (hi - lo)
+        g = lo + _surface_lattice(*(int(k) for k in n)) * (hi - lo)
         pts.append(g)
         idx.append(np.full(len(g), b))
     return np.concatenate(pts), np.concatenate(idx)
+
+
+@lru_cache(maxsize=1024)
+def _surface_lattice(nx: int, ny: int, nz: int) -> np.ndarray:
+    """Points (K, 3) of the regular nx x ny x nz lattice of the unit cube that lie on
+    its faces."""
+    n = np.array([nx, ny, nz])
+    ijk = np.stack(np.meshgrid(np.arange(nx), np.arange(ny), np.arange(nz), indexing="ij"), axis=-1).reshape(-1, 3)
+    u = ijk[np.any((ijk == 0) | (ijk == n - 1), axis=1)] / (n - 1)
+    u.flags.writeable = False
+    return u
 
 
 @dataclass
@@ -251,9 +260,18 @@ def _gripper_grid(gripper: Gripper, width: float, spacing: float) -> np.ndarray:
     return g
 
 
+#: Primitives farther than this (metres, by bounding box) from a gripper are not
+#: evaluated for it: its clearance is then +inf or at least this much.
+CLEARANCE_RANGE = 0.02
+
+
 def gripper_clearance(obj, pose: np.ndarray, width: np.ndarray, qpos=None, gripper: Gripper = DEFAULT_GRIPPER,
                       spacing: float = 0.004) -> np.ndarray:
     """Smallest signed distance (G,) between each gripper's box grid and ``obj``.
+
+    Each gripper is tested only against the primitives whose bounding box comes within
+    :data:`CLEARANCE_RANGE` of its own (exact SDFs, one call per primitive for all the
+    grippers near it).
 
     Parameters
     ----------
@@ -263,9 +281,25 @@ def gripper_clearance(obj, pose: np.ndarray, width: np.ndarray, qpos=None, gripp
         Jaw openings (metres).
     """
     pts, gi = gripper_points(pose, width, gripper, spacing)
-    d, _ = object_sdf(obj, pts, qpos, max_dist=0.02, sort=False)
-    out = np.full(len(width), np.inf)
-    np.minimum.at(out, gi, d)
+    G = len(width)
+    out = np.full(G, np.inf)
+    if not len(pts):
+        return out
+    start = np.searchsorted(gi, np.arange(G + 1))  # each gripper's points are contiguous
+    glo = np.minimum.reduceat(pts, start[:-1], axis=0) - CLEARANCE_RANGE
+    ghi = np.maximum.reduceat(pts, start[:-1], axis=0) + CLEARANCE_RANGE
+    table = obj.primitive_table
+    B = table.world_boxes(obj.link_poses(qpos))
+    near = np.all((B[None, :, 0] <= ghi[:, None]) & (B[None, :, 1] >= glo[:, None]), axis=2)  # (G, N)
+    W = table.world_all(obj.link_poses(qpos))
+    geoms, params = primitive_params(obj)
+    for k in np.flatnonzero(near.any(axis=0)):
+        gs = np.flatnonzero(near[:, k])
+        idx = np.concatenate([np.arange(start[g], start[g + 1]) for g in gs])
+        R, t = W[k, :, :3], W[k, :, 3]
+        d = geoms[k].sdf(params[k], (pts[idx] - t) @ R)
+        seg = np.concatenate([[0], np.cumsum(start[gs + 1] - start[gs])[:-1]])
+        out[gs] = np.minimum(out[gs], np.minimum.reduceat(d, seg))
     return out
 
 

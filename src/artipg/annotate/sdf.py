@@ -37,7 +37,7 @@ def _spatial_order(x: np.ndarray, cell: float = 0.05) -> np.ndarray:
     return np.lexsort((q[:, 2], q[:, 1], q[:, 0]))
 
 
-def _primitive_params(obj):
+def primitive_params(obj) -> tuple[list, list]:
     """Geometry template and parameter vector of every primitive, by global index."""
     table = obj.primitive_table
     geoms: list = [None] * table.n_prims
@@ -108,7 +108,7 @@ def object_sdf(obj, x: np.ndarray, qpos=None, max_dist: float = np.inf, parts=No
     r = max_dist if np.isfinite(max_dist) else np.inf
     hit = np.all(B[None, :, 0] - r <= chi[:, None], axis=2) & np.all(B[None, :, 1] + r >= clo[:, None], axis=2)
     L = obj.link_poses(qpos)
-    geoms, params = _primitive_params(obj)
+    geoms, params = primitive_params(obj)
     bs = np.full(n, np.inf)
     ba = np.full(n, -1, dtype=np.int64)
     for col in np.flatnonzero(hit.any(axis=0)):

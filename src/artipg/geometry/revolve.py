@@ -152,8 +152,11 @@ class Frustum(GeometryTemplate):
 
     @classmethod
     def sdf(cls, p, x):
-        q = np.stack([np.hypot(x[:, 0], x[:, 1]), x[:, 2]], axis=1)
-        return polygon_sdf(q, cls._profile(p))
+        rho = np.hypot(x[:, 0], x[:, 1])
+        if abs(p[0] - p[1]) <= 1e-12:  # cylinder: the 2-D box distance in (ρ, z)
+            dx, dz = rho - p[0], np.abs(x[:, 2]) - p[2] / 2
+            return np.hypot(np.maximum(dx, 0.0), np.maximum(dz, 0.0)) + np.minimum(np.maximum(dx, dz), 0.0)
+        return polygon_sdf(np.stack([rho, x[:, 2]], axis=1), cls._profile(p))
 
     @classmethod
     def bounds(cls, p):
