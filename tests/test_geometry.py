@@ -111,9 +111,16 @@ def test_collision_pieces_cover_hollow_shapes_without_filling_them():
     centre = np.zeros((1, 3))
     import trimesh
 
+    covered = []
     for pc in pieces:
-        hull = trimesh.Trimesh(pc.vertices, pc.faces)
+        V = pc.vertices @ pc.pose[:3, :3].T + pc.pose[:3, 3]
+        hull = trimesh.Trimesh(V, pc.faces)
+        assert hull.is_watertight and hull.volume > 0
         assert not hull.contains(centre)[0]
+        covered.append(V)
+    # the posed pieces go all the way round the wall
+    angles = np.arctan2(*np.concatenate(covered)[:, 1::-1].T)
+    assert np.ptp(np.sort(angles)) > 2 * np.pi - 0.5 and np.diff(np.sort(angles)).max() < 0.5
 
 
 @pytest.mark.parametrize("name", sorted(CASES))

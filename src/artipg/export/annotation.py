@@ -11,6 +11,8 @@ import artipg
 
 def _r(x, nd=6):
     """Round floats (nested lists) for a stable, compact JSON."""
+    if isinstance(x, np.ndarray) and x.dtype.kind == "f":
+        return (np.round(x, nd) + 0.0).tolist()  # + 0.0 turns -0.0 into 0.0
     if isinstance(x, (list, tuple, np.ndarray)):
         return [_r(v, nd) for v in x]
     if isinstance(x, (float, np.floating)):

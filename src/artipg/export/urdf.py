@@ -68,6 +68,7 @@ def build_urdf(obj, sections: int = 24, visuals: bool = True) -> tuple[ET.Elemen
             vis = ET.SubElement(el, "visual", name=f"{link.name}_visual")
             _origin(vis, np.eye(4))
             ET.SubElement(ET.SubElement(vis, "geometry"), "mesh", filename=path)
+        written: dict[int, str] = {}
         for k, (piece, T) in enumerate(link_collision_pieces(link)):
             col = ET.SubElement(el, "collision", name=f"{link.name}_c{k}")
             _origin(col, T)
@@ -78,9 +79,11 @@ def build_urdf(obj, sections: int = 24, visuals: bool = True) -> tuple[ET.Elemen
                 ET.SubElement(geom, "cylinder", radius=f"{piece.size[0]:.9g}", length=f"{piece.size[1]:.9g}")
             elif piece.shape == "sphere":
                 ET.SubElement(geom, "sphere", radius=f"{piece.size[0]:.9g}")
-            else:
-                path = f"meshes/{link.name}_c{k}.obj"
-                files[path] = obj_text(piece.vertices, piece.faces)
+            else:  # pieces sharing one hull (sectors of a ring) share one file
+                path = written.get(id(piece.vertices))
+                if path is None:
+                    path = written[id(piece.vertices)] = f"meshes/{link.name}_c{k}.obj"
+                    files[path] = obj_text(piece.vertices, piece.faces)
                 ET.SubElement(geom, "mesh", filename=path)
     for j in obj.joints:
         el = ET.SubElement(robot, "joint", name=j.name, type=j.type)

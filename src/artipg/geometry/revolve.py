@@ -22,7 +22,7 @@ from artipg.geometry.base import (
     wedge_sdf,
 )
 from artipg.geometry.patches import bands, compile_linear, linear, rects, sectors, tori, zones
-from artipg.geometry.transforms import IDENTITY
+from artipg.geometry.transforms import IDENTITY, rot_z
 
 FULL = TWO_PI
 # patch layouts shared by the solids of revolution: (2, 1) columns broadcast over rows
@@ -449,7 +449,8 @@ SECTOR_SAGITTA = 5e-4
 def sector_hulls(profile: np.ndarray, arc: float, r_concave: float) -> list[CollisionPiece]:
     """Convex hulls of equal sectors of ``profile`` (ρ, z) revolved over ``arc`` radians,
     as few as keep each hull within :data:`SECTOR_SAGITTA` of the concave side at
-    radius ``r_concave``."""
+    radius ``r_concave``. All pieces share one hull (the same vertex and face arrays)
+    placed by their ``pose``, a turn about z, so exporters can write it once."""
     arc = min(float(arc), FULL)
     r = max(float(r_concave), 1e-6)
     step = 2.0 * math.acos(max(-1.0, 1.0 - SECTOR_SAGITTA / r))
@@ -457,12 +458,7 @@ def sector_hulls(profile: np.ndarray, arc: float, r_concave: float) -> list[Coll
     n = max(1, int(math.ceil(arc / (FULL / n_turn) - 1e-9)))
     a = arc / n
     V, F = convex_hull(revolve_arrays(profile, arc=a, sections=max(2, int(math.ceil(FULL / a))))[0])
-    out = []
-    for i in range(n):
-        c, s_ = math.cos(i * a), math.sin(i * a)
-        Rz = np.array([[c, -s_, 0.0], [s_, c, 0.0], [0.0, 0.0, 1.0]])
-        out.append(CollisionPiece("mesh", vertices=V @ Rz.T, faces=F))
-    return out
+    return [CollisionPiece("mesh", pose=rot_z(i * a), vertices=V, faces=F) for i in range(n)]
 
 
 # ---------------------------------------------------------------- constructors
