@@ -101,3 +101,20 @@ def test_killed_run_resumes_without_rewriting(tmp_path):
     after = {p.name: p.stat().st_mtime_ns for p in folder.iterdir()}
     assert sorted(after, key=int) == [str(s) for s in range(n)]  # no temporary leftovers
     assert all(after[k] == v for k, v in finished.items())
+
+
+def test_validate_mounts_fixtures_unless_told_otherwise(tmp_path):
+    """A door's annotation marks it a fixture: `artipg validate` simulates it mounted by
+    default and dropped on the floor with --free-base."""
+    import json
+
+    from artipg.export import export_object
+
+    folder = export_object(artipg.generate("door", 0), tmp_path / "door" / "0")
+    assert json.loads((folder / "annotation.json").read_text())["fixed_base"] is True
+    for flag, expected in (([], True), (["--free-base"], False)):
+        out = tmp_path / f"report{len(flag)}.json"
+        r = run("validate", str(folder), "--json", str(out), *flag)
+        report = json.loads(out.read_text())["objects"][0]
+        assert report["fixed_base"] is expected, (r.stdout, r.stderr)
+        assert report["checks"]["simulator"]["info"]["fixed_base"] is expected

@@ -340,7 +340,9 @@ def test_unrepairable_object_is_replaced_from_a_derived_seed():
         link.add(Part("lid", "test_lid", [cylinder(0.125, 0.005, translation(0, 0, 0.0025))]))
 
     rule = Category("test_replace", {"plain": 1.0}, (Slot("lid", lid),))
-    seed = next(s for s in range(50) if rule.generate(s).params["lid.sunk"].value)
+    # a sunk seed whose first replacement is not (which seeds those are depends on the streams)
+    seed = next(s for s in range(200) if rule.generate(s).params["lid.sunk"].value
+                and not rule.generate(replacement_seed(s, 1)).params["lid.sunk"].value)
     from artipg.validate import RepairBudget
 
     obj = generate_valid(rule, seed, budget=RepairBudget(iterations=0))
@@ -439,7 +441,7 @@ def test_validate_command_on_artipg_and_partnet_style_folders(tmp_path):
     r = _cli("validate", str(tmp_path / "partnet" / "101"), "--json", str(report))
     assert r.returncode == 0, r.stdout + r.stderr
     sim = json.loads(report.read_text())["objects"][0]["checks"]["simulator"]
-    assert sim["ok"] and set(sim["info"]) == {"pybullet", "mujoco"}
+    assert sim["ok"] and {"pybullet", "mujoco"} <= set(sim["info"]) and sim["info"]["fixed_base"] is False
 
 
 def test_simulators_catch_a_hollow_body_exported_as_one_hull(tmp_path):

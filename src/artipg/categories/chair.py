@@ -179,6 +179,11 @@ def _folding(ctx):
                   regions={"lift": Region(("cushion",))}))
     q, fx = frame.anchor("leg_pivot"), frame.anchor("front_foot")[0]
     u = np.array([p.uniform("rear_foot", 0.05, 0.15) - q[0], -q[2]])  # pivot -> rear foot
+    # all four feet on the floor: the rear legs (square tubes cut square to their axis)
+    # reach down with a corner as far as the front tubes (cut square too) with their rim
+    drop = rp * math.sin(math.atan2(-fx, hs - st / 2))
+    for _ in range(2):
+        u[1] = -q[2] + rp * abs(math.sin(math.atan2(u[0], u[1]))) - drop
     v = np.array([fx - q[0], -q[2]])  # pivot -> front foot
     legs = folding_rear_legs(p.scope("rear"), u, sw / 2 + 3 * rp, rp)  # outside the tubes and their plates
     lc, rc, _ = legs.anchor("crossbar")

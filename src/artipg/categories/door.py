@@ -143,6 +143,7 @@ def _barn(ctx, root, d):
 RULE = Category(
     name="door",
     subcategories={"single_door": 3.0, "double_door": 1.5, "french_door": 1.0, "barn_door": 1.0},
+    fixed_base=True,  # set in a wall opening: simulated mounted, not dropped on a floor
     slots=(Slot("frame", frame), Slot("leaves", leaves, after=("frame",)),
            Slot("hardware", hardware, after=("leaves",))),
 )

@@ -63,7 +63,10 @@ def levers(ctx):
     root, rc, top, valves, _ = ctx.out["base"]
     p, b = ctx.p, ctx.builder
     if ctx.sub == "single_lever":
-        lv = joystick_lever(p, rc)
+        # the lever's cap sits 0.5 mm inside the column's rim, about which it tilts: it
+        # lifts clear at once instead of rolling on a rim line, a contact MuJoCo's convex
+        # collider misreads as 20 mm deep at some angles
+        lv = joystick_lever(p, rc - 0.0005)
         link = b.create_link("lever", root)
         link.set_joint("revolute", top @ translation(rc, 0, 0), axis=(0.0, 1.0, 0.0),
                        limits=(0.0, p.uniform("lift", 0.3, 0.6)))
@@ -129,6 +132,7 @@ def head(ctx):
 RULE = Category(
     name="faucet",
     subcategories={"single_lever": 3.0, "two_handle": 2.0, "pull_out": 2.0, "gooseneck": 1.5},
+    fixed_base=True,  # mounted on a sink or counter: simulated mounted, not dropped on a floor
     slots=(Slot("base", base), Slot("levers", levers, after=("base",)), Slot("spout", spout, after=("levers",)),
            Slot("head", head, after=("spout",))),
 )

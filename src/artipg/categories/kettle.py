@@ -133,6 +133,8 @@ def controls(ctx):
     if ctx.sub == "electric" and p.flag("release", 0.6):  # lid-release button on top of the handle
         x, _, z = h.anchors["top"]
         r = float(h.anchors["tube"][0])
+        # the pressed cap (radius <= 0.6 r) stays 1 mm off the body's wall
+        x = max(x, wall_radius(part, z) + 0.6 * r + 0.001)
         pad = p.uniform("pad", 0.003, 0.005)
         root.add(Part("handle", "button_pad", [cuboid(0.022, 2 * r, pad, translation(x, 0, z + pad / 2 - 0.001),
                                                       role="pad")]), _at(zb), name="pad")

@@ -142,8 +142,12 @@ def fronts(ctx):
                 hl = min(0.4 * size[1], 0.35)
                 ht = ctx.choose(f"{cell}.handle{i}_template", handles)
                 m = 0.03 if ht is not knob_pull else 0.04
-                hy, hz = free_edge_yz(side, (w, size[1]), min(m, _stile(door) / 2))
-                link.add(ht(q.scope(f"handle{i}"), length=hl), handle_pose(door.pose, front_thickness(door), hy, hz, False))
+                h = ht(q.scope(f"handle{i}"), length=hl)
+                # no handle overhangs its free edge, where a double door's two handles meet
+                # (two ball knobs on stiles narrower than they are would overlap)
+                reach = float(np.abs(h.bounds()[:, 1]).max()) + 0.0015
+                hy, hz = free_edge_yz(side, (w, size[1]), max(min(m, _stile(door) / 2), reach))
+                link.add(h, handle_pose(door.pose, front_thickness(door), hy, hz, False))
 
 
 RULE = Category(

@@ -83,5 +83,6 @@ def modules(ctx):
 RULE = Category(
     name="switch",
     subcategories={"rocker": 3.0, "toggle": 2.0, "push_button": 2.0, "dimmer": 1.0},
+    fixed_base=True,  # mounted on a wall: simulated mounted, not dropped on a floor
     slots=(Slot("plate", plate), Slot("modules", modules, after=("plate",))),
 )

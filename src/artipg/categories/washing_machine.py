@@ -136,7 +136,9 @@ def fronts(ctx):
         for i, (yc, R, a, m_max) in enumerate(holes):
             q = p.scope(f"lid{i}")
             m = q.uniform("margin", 0.01, 0.05) if m_max > 0.05 else m_max
-            lid = ctx.choose("lid", LIDS)(q, xh - (xc - a - m), 2 * (a + m))
+            # one name per tub: a twin tub's second choice must not share the first's name,
+            # or overrides (repair) cannot reproduce the object
+            lid = ctx.choose(f"lid{i}.template", LIDS)(q, xh - (xc - a - m), 2 * (a + m))
             link = ctx.builder.create_link("lid", root)
             b = lid.bounds()
             link.set_joint("revolute", translation(xh, yc, H + b[1][2] - b[0][2]), axis=(0, 1, 0),

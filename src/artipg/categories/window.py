@@ -166,5 +166,6 @@ def _hung(ctx, root, d, c, sash, rail):
 RULE = Category(
     name="window",
     subcategories={"casement": 3.0, "sliding": 2.0, "double_hung": 2.0, "awning": 1.0},
+    fixed_base=True,  # set in a wall opening: simulated mounted, not dropped on a floor
     slots=(Slot("frame", frame), Slot("sashes", sashes, after=("frame",))),
 )

@@ -15,13 +15,13 @@ from artipg.commands import err_console, fail
 console = Console(highlight=False)
 
 
-def _validate_one(task: tuple[str, bool]) -> dict:
+def _validate_one(task: tuple[str, bool, bool | None]) -> dict:
     """Worker: validate one folder; returns its JSON report (with "path" and "error")."""
     from artipg.validate.folder import validate_folder
 
-    path, sim = task
+    path, sim, fixed_base = task
     try:
-        report, meta = validate_folder(path, simulate=sim)
+        report, meta = validate_folder(path, simulate=sim, fixed_base=fixed_base)
     except Exception as e:  # a broken folder is a failed object, not a crashed run
         return {"path": path, "ok": False, "error": f"{type(e).__name__}: {e}", "checks": {}}
     out = {"path": path, **{k: v for k, v in meta.items() if k != "path"}}
@@ -73,6 +73,10 @@ def register(app: typer.Typer) -> None:
         sim: bool = typer.Option(True, "--sim/--no-sim", help="Run the pybullet / MuJoCo checks."),
         workers: int = typer.Option(1, "--workers", "-j", help="Worker processes."),
         issues: bool = typer.Option(False, "--issues", help="Print every issue under the table."),
+        fixed_base: Optional[bool] = typer.Option(
+            None, "--fixed-base/--free-base",
+            help="Simulate the objects mounted (fixtures: faucets, doors...) or dropped on a floor. "
+                 "Default: what each annotation.json says, else free (PartNet-Mobility folders)."),
     ) -> None:
         """Check penetration, floating parts, joint sweeps and simulators; exit 1 if any object fails."""
         from artipg.validate.folder import find_objects
@@ -85,7 +89,7 @@ def register(app: typer.Typer) -> None:
             fail(str(e))
         if not folders:
             fail("no object folders (with mobility.urdf) under " + ", ".join(map(str, paths)))
-        tasks = [(str(f), sim) for f in folders]
+        tasks = [(str(f), sim, fixed_base) for f in folders]
         if workers == 1:
             results = [_validate_one(t) for t in tasks]
         else:

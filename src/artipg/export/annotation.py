@@ -32,6 +32,7 @@ def annotation_dict(obj, grasps=None) -> dict:
     """
     from artipg.annotate.grasps import world_grasps
     from artipg.annotate.labels import part_frames
+    from artipg.validate.sim import category_fixed_base
 
     frames = part_frames(obj)
     g = world_grasps(obj) if grasps is None else grasps
@@ -67,6 +68,9 @@ def annotation_dict(obj, grasps=None) -> dict:
         "seed": obj.seed,
         "version": artipg.__version__,
         "frame": {"up": "+z", "front": "-x", "units": "m"},
+        # fixtures (faucets, switches, doors, windows) are meant to be mounted: load them
+        # with a fixed base in a simulator
+        "fixed_base": category_fixed_base(obj.category),
         "bounds": _r(obj.bounds()),
         "templates": obj.templates,
         "parameters": {k: {kk: _r(vv) for kk, vv in p.to_json().items()} for k, p in sorted(obj.params.items())},

@@ -3,7 +3,7 @@ and lotion pumps.
 
 Part frame: origin at the centre of the neck's top face, +z out of the neck. Caps sit
 *on* the neck (their top disc rests on its rim, their skirt clears its outside by
-0.4 mm); stoppers and pump stems go *into* the bore with the same clearance.
+:data:`CLEAR`); stoppers and pump stems go *into* the bore with the same clearance.
 
 Each closure template ``f(p, builder, parent, pose, neck)`` builds its links on
 ``parent`` at ``pose`` (the neck-top frame in the parent link) for a neck given as
@@ -27,7 +27,12 @@ from artipg.geometry.transforms import rot_y, translation
 from artipg.model.part import Part, Region
 from artipg.templates.levers import top_grasp
 
-CLEAR = 0.0004  # radial clearance between a cap and the neck, or a stem and a bore
+#: Radial clearance (metres) between a cap's skirt and the neck, or a stopper / stem and
+#: a bore: the room a real cap's threads take. It must exceed the 0.5 mm by which the
+#: flat faces of the convex sectors that simulators use for a ring cut inside its
+#: round surface (``artipg.geometry.revolve.SECTOR_SAGITTA``), or the skirt the simulators
+#: see cuts into the neck they see.
+CLEAR = 0.0008
 
 
 def screw_cap(p, neck_r: float, neck_h: float, height: float | None = None) -> Part:

@@ -53,14 +53,21 @@ def _lid(template, prims, R, t, skirt, top, sides, grip_roles=("disc",), grasps=
 def _base(p, radius, sides, skirt_p):
     R = radius + p.uniform("overhang", 0.002, 0.008)
     t = p.uniform("thickness", 0.003, 0.01)
-    prims = [_disc(R, t, sides)]
+    prims = []
     s = 0.0
     if sides is None and p.flag("skirt", skirt_p):
         s = p.uniform("skirt_length", 0.006, 0.015)
-        # wall at least 1.5 mm (simulators reject thinner meshes), >= 0.5 mm off the rim
+        # wall at least 1.5 mm (simulators reject thinner meshes), >= 1 mm off the rim
+        R = max(R, radius + 0.0025)
         wall = max(0.0015, 0.5 * (R - radius))
+        # hinged at the skirt's back bottom edge (mount_lid), the lid swings the front of
+        # its skirt in towards the rim before the skirt clears it: the skirt is short
+        # enough to stay 0.5 mm off the rim all the way (more than the simulators'
+        # faceted rings cut inside round ones)
+        g = R - wall - radius
+        s = min(s, math.sqrt((g - 0.0005) * (2.0 * (R + radius) + g)))
         prims.append(ring(R, R - wall, s, pose=translation(0, 0, -s / 2), role="skirt"))
-    return R, t, s, prims
+    return R, t, s, [_disc(R, t, sides)] + prims
 
 
 def flat_lid(p, radius: float, sides: int | None = None) -> Part:

@@ -18,12 +18,13 @@ import math
 
 import numpy as np
 
-from artipg.geometry import cuboid, cylinder, frustum, tube
+from artipg.geometry import cuboid, cylinder, ring, tube
 from artipg.geometry.transforms import rot_y, translation
 from artipg.geometry.tube import arc, line
 from artipg.model.part import Grasp, Part, Region
 
 _EMBED = 0.0008  # the spout's inner face sits this deep in the wall (walls are >= 1.5 mm)
+_WALL = 0.0015  # sheet thickness of the hollow straight spouts (a solid one would outweigh the kettle)
 
 
 def _spout(name, prims, tip, heading, r) -> Part:
@@ -33,9 +34,10 @@ def _spout(name, prims, tip, heading, r) -> Part:
 
 
 def _neck(r, length):
-    """Short horizontal boss from inside the wall (its inner face sits within the wall's
+    """Short horizontal tube from inside the wall (its inner end sits within the wall's
     thickness) out to x = ``length``, which the spout leaves from."""
-    return cylinder(r, length + _EMBED, translation((length - _EMBED) / 2, 0, 0) @ rot_y(math.pi / 2), role="spout")
+    return ring(r, r - _WALL, length + _EMBED, pose=translation((length - _EMBED) / 2, 0, 0) @ rot_y(math.pi / 2),
+                role="spout")
 
 
 def _cone(p, name, base_r, tip_ratio, length, tilt, rise):
@@ -47,7 +49,8 @@ def _cone(p, name, base_r, tip_ratio, length, tilt, rise):
     x0 = n / 2 - 0.0005
     T = translation(x0, 0, 0) @ rot_y(math.pi / 2 - a)  # local z along the spout
     tip = (x0 + L * math.cos(a), 0.0, L * math.sin(a))
-    return _spout(name, [_neck(rb, n), frustum(rb, rt, L, T @ translation(0, 0, L / 2), role="spout")], tip, a, rt)
+    cone = ring(rb, rb - _WALL, L, pose=T @ translation(0, 0, L / 2), role="spout", taper=rt - rb)
+    return _spout(name, [_neck(rb, n), cone], tip, a, rt)
 
 
 def cone_spout(p, rise: float | None = None) -> Part:

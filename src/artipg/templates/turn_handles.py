@@ -76,10 +76,12 @@ def return_lever(p, side: float = 1.0) -> Part:
     L = p.uniform("lever_length", 0.09, 0.12)
     bend = p.uniform("bend_radius", 2.0, 3.0) * r
     prims, x = _rose_and_neck(p, 1.2 * r)
+    # the return stops 4 mm short of the door; on a short neck there is no room for it
     back = min(p.uniform("return_length", 0.01, 0.025), -x - bend - 2 * r - 0.004)
     # path in local (x, z) = (side*y, x): along the lever, then curling towards the door
     T = np.array([[0.0, 0.0, 1.0, x + r], [side, 0.0, 0.0, 0.0], [0.0, side, 0.0, 0.0], [0.0, 0.0, 0.0, 1.0]])
-    prims += tube(r, [line(L - bend), arc(bend, math.pi / 2), line(back)], pose=T, role="grip")
+    path = [line(L - bend), arc(bend, math.pi / 2)] + ([line(back)] if back > 1e-3 else [])
+    prims += tube(r, path, pose=T, role="grip")
     return _lever("return_lever", prims, x + r, side, L, 2 * r)
 
 

@@ -139,13 +139,14 @@ def toggle_module(p, builder, plate_link, pose: np.ndarray, width: float, height
 def button_bezel(p, part: Part, pose: np.ndarray, round_cap: bool) -> Part:
     """Fixed bezel around a push-button cap mounted at ``pose`` (see
     :mod:`artipg.templates.controls`): it surrounds the back half of the cap with
-    0.5 mm clearance, so the cap slides in it without touching."""
+    0.5 mm clearance (round ones 0.8 mm: more than the 0.5 mm by which the simulators'
+    faceted rings cut inside round ones), so the cap slides in it without touching."""
     lo, hi = part.bounds()
     depth = -(lo[0] + hi[0]) / 2  # from the surface to the cap's middle
     w = p.uniform("bezel_width", 0.0015, 0.003)
     T = pose @ translation(-depth / 2, 0, 0) @ _X
     if round_cap:
-        r = max(hi[1], hi[2]) + 0.0005
+        r = max(hi[1], hi[2]) + 0.0008
         prim = ring(r + w, r, depth, pose=T, role="bezel")
     else:
         iy, iz = hi[1] - lo[1] + 0.001, hi[2] - lo[2] + 0.001

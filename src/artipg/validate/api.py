@@ -15,7 +15,8 @@ from artipg.validate.shapes import Pieces
 SAMPLE_STREAM = 0x5A3B1E
 
 
-def check_object(obj, tol: Tolerances = Tolerances(), simulate: bool = False, sim_options=None) -> Report:
+def check_object(obj, tol: Tolerances = Tolerances(), simulate: bool = False, sim_options=None,
+                 fixed_base: bool | None = None) -> Report:
     """Run the validation checks on an :class:`artipg.model.ArticulatedObject`.
 
     Parameters
@@ -27,6 +28,10 @@ def check_object(obj, tol: Tolerances = Tolerances(), simulate: bool = False, si
         Also export the object to a temporary folder and run the simulator checks
         (pybullet and MuJoCo; see :mod:`artipg.validate.sim`).
     sim_options : artipg.validate.sim.SimOptions, optional
+    fixed_base : bool, optional
+        Simulate the object mounted (its root fixed) instead of dropping it on a floor;
+        by default its category's ``fixed_base`` policy (fixtures: faucets, switches,
+        doors, windows).
 
     Returns
     -------
@@ -45,5 +50,5 @@ def check_object(obj, tol: Tolerances = Tolerances(), simulate: bool = False, si
     if simulate:
         from artipg.validate.sim import SimOptions, simulate_object
 
-        report.checks["simulator"] = simulate_object(obj, sim_options or SimOptions())
+        report.checks["simulator"] = simulate_object(obj, sim_options or SimOptions(), fixed_base)
     return report

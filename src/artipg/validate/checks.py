@@ -23,7 +23,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from artipg.validate.contacts import deepest_point, overlapping, pair_distance, refine_distance, world_boxes
+from artipg.validate.contacts import (close_pairs, deepest_point, overlapping, pair_distance, refine_distance,
+                                      world_boxes)
 from artipg.validate.kinematics import Kinematics, motion, rigid_inverse
 from artipg.validate.report import CheckResult, Issue
 from artipg.validate.shapes import Pieces
@@ -113,8 +114,8 @@ def run_checks(kin: Kinematics, pieces: Pieces, tol: Tolerances = Tolerances()) 
 
 def _rest_pairs(pieces, c0, h0, tol) -> dict:
     """Pieces of different parts within the floating tolerance of each other at rest."""
-    a, b = np.triu_indices(pieces.n, 1)
-    ov = overlapping(c0, h0, c0, h0, tol.floating)[a, b] & (pieces.part[a] != pieces.part[b])
+    a, b = close_pairs(c0, h0, tol.floating)
+    ov = pieces.part[a] != pieces.part[b]
     return {"a": a[ov], "b": b[ov], "Wa": None, "Wb": None, "margin": tol.floating}
 
 
@@ -131,26 +132,27 @@ def _sweep_pairs(kin, pieces, rest, W0, c0, h0, tol) -> dict:
     # a solid of revolution turning about its own axis occupies the same space at
     # every joint value: its rest result stands for the whole sweep
     moving = subtree & ~_turns_in_place(kin, pieces, rest, W0, movable)
-    values = [kin.sweep_values(i, tol.sweep_poses) for i in movable]
-    scene_joint = np.repeat(np.arange(len(movable)), [len(v) for v in values])
-    scene_q = np.concatenate(values)
-    link = movable[scene_joint]
-    A = rest[link]
-    types = np.array(kin.joint_types, dtype=object)[link].astype(str)
-    G = A @ motion(types, kin.axis[link], scene_q) @ rigid_inverse(A)
+    scene_joint, scene_q = kin.sweep_table(tol.sweep_poses)
     out["joint"], out["q"] = scene_joint, scene_q
+    GR, Gt = _world_motions(kin, rest, movable, scene_joint, scene_q)  # (S, 3, 3), (S, 3)
     s_idx, p_idx = np.nonzero(moving[scene_joint])  # (scene, moving piece) rows
     if not len(s_idx):
         return out
-    Wm = G[s_idx] @ W0[p_idx]
-    cm, hm = world_boxes(pieces, Wm, p_idx)
+    # boxes of the moving pieces at every pose: centre G c0, axes G R0
+    Rg, R0 = GR[s_idx], W0[p_idx, :3, :3]
+    Rm = (Rg[:, :, 0, None] * R0[:, 0, None, :] + Rg[:, :, 1, None] * R0[:, 1, None, :]
+          + Rg[:, :, 2, None] * R0[:, 2, None, :])
+    c = c0[p_idx]
+    cm = Rg[:, :, 0] * c[:, 0, None] + Rg[:, :, 1] * c[:, 1, None] + Rg[:, :, 2] * c[:, 2, None] + Gt[s_idx]
+    Am, hp = np.abs(Rm), pieces.half[p_idx]
+    hm = Am[:, :, 0] * hp[:, 0, None] + Am[:, :, 1] * hp[:, 1, None] + Am[:, :, 2] * hp[:, 2, None]
     # swept box of each (joint, moving piece) over all its poses
     key = scene_joint[s_idx] * pieces.n + p_idx
     order = np.argsort(key, kind="stable")
     ks = key[order]
-    starts = np.flatnonzero(np.r_[True, ks[1:] != ks[:-1]])
+    starts = np.concatenate([[0], (ks[1:] != ks[:-1]).nonzero()[0] + 1])
     ukey = ks[starts]
-    counts = np.diff(np.r_[starts, len(ks)])
+    counts = np.diff(np.append(starts, len(ks)))
     lo = np.minimum.reduceat((cm - hm)[order], starts)
     hi = np.maximum.reduceat((cm + hm)[order], starts)
     cand = overlapping(0.5 * (lo + hi), 0.5 * (hi - lo), c0, h0, -_OVERLAP) & ~subtree[ukey // pieces.n]
@@ -163,8 +165,30 @@ def _sweep_pairs(kin, pieces, rest, W0, c0, h0, tol) -> dict:
     bb = np.repeat(b, n_rep)
     ok = (np.abs(cm[rows] - c0[bb]) - (hm[rows] + h0[bb]) < -_OVERLAP).all(axis=1)
     rows, bb = rows[ok], bb[ok]
-    out.update(a=p_idx[rows], b=bb, Wa=Wm[rows], Wb=W0[bb], scene=s_idx[rows])
+    Wm = np.zeros((len(rows), 4, 4))
+    Wm[:, :3, :3] = Rm[rows]
+    Rr, t0 = Rg[rows], W0[p_idx[rows], :3, 3]
+    Wm[:, :3, 3] = (Rr[:, :, 0] * t0[:, 0, None] + Rr[:, :, 1] * t0[:, 1, None] + Rr[:, :, 2] * t0[:, 2, None]
+                    + Gt[s_idx[rows]])
+    Wm[:, 3, 3] = 1.0
+    out.update(a=p_idx[rows], b=bb, Wa=Wm, Wb=W0[bb], scene=s_idx[rows])
     return out
+
+
+def _world_motions(kin, rest, movable, scene_joint, q):
+    """Rigid motions (rotation (S, 3, 3), translation (S, 3)), object frame, that move
+    the subtree of joint ``movable[scene_joint]`` from rest to joint value ``q``: a turn
+    about the joint's world axis line or a slide along its world axis."""
+    link = movable[scene_joint]
+    R, p = rest[link, :3, :3], rest[link, :3, 3]
+    ax = kin.axis[link]
+    a = R[:, :, 0] * ax[:, 0, None] + R[:, :, 1] * ax[:, 1, None] + R[:, :, 2] * ax[:, 2, None]  # world axes
+    slide = np.array([kin.joint_types[i] == "prismatic" for i in movable])[scene_joint]
+    ang = np.where(slide, 0.0, q)
+    M = motion("revolute", a, ang)[:, :3, :3]
+    Mp = M[:, :, 0] * p[:, 0, None] + M[:, :, 1] * p[:, 1, None] + M[:, :, 2] * p[:, 2, None]
+    t = np.where(slide[:, None], q[:, None] * a, p - Mp)
+    return M, t
 
 
 def _turns_in_place(kin, pieces, rest, W0, movable) -> np.ndarray:
@@ -175,17 +199,21 @@ def _turns_in_place(kin, pieces, rest, W0, movable) -> np.ndarray:
     if not sym.any():
         return out
     m = np.flatnonzero(sym)
-    z = W0[m, :3, 2]
-    o = W0[m, :3, 3]
-    for k, i in enumerate(movable):
-        if kin.joint_types[i] == "prismatic":
-            continue
-        a = rest[i][:3, :3] @ kin.axis[i]
-        p = rest[i][:3, 3]
-        along = np.abs(np.cross(z, a)).max(axis=1) < 1e-9
-        d = o - p
-        on_axis = np.linalg.norm(d - (d @ a)[:, None] * a, axis=1) < 1e-9
-        out[k, m] = along & on_axis
+    z = W0[m, :3, 2][None]  # (1, m, 3)
+    o = W0[m, :3, 3][None]
+    R = rest[movable]
+    u = kin.axis[movable]
+    a = (R[:, :3, 0] * u[:, 0, None] + R[:, :3, 1] * u[:, 1, None] + R[:, :3, 2] * u[:, 2, None])[:, None, :]  # world
+    p = R[:, None, :3, 3]
+    zx, zy, zz = z[..., 0], z[..., 1], z[..., 2]
+    ax, ay, az = a[..., 0], a[..., 1], a[..., 2]
+    cross = np.maximum(np.maximum(np.abs(zy * az - zz * ay), np.abs(zz * ax - zx * az)), np.abs(zx * ay - zy * ax))
+    along = cross < 1e-9
+    d = o - p  # (J, m, 3)
+    r = d - (d * a).sum(axis=2, keepdims=True) * a
+    on_axis = np.sqrt((r * r).sum(axis=2)) < 1e-9
+    rev = np.array([kin.joint_types[i] != "prismatic" for i in movable])
+    out[:, m] = along & on_axis & rev[:, None]
     return out
 
 
@@ -197,17 +225,15 @@ def _open_pairs(kin, pieces, rest, frac) -> dict:
     c, h = world_boxes(pieces, W)
     # links moved by the same rigid motion keep their relative pose (checked at rest)
     G = (P @ rigid_inverse(rest))[:, :3].reshape(len(P), 12)
-    label = np.arange(len(P))
-    for i in range(1, len(P)):
-        same = np.flatnonzero(np.abs(G[:i] - G[i]).max(axis=1) < 1e-9)
-        if len(same):
-            label[i] = label[same[0]]
-    group = label[pieces.link]
-    a, b = np.triu_indices(pieces.n, 1)
+    first = (np.abs(G[:, None, :] - G[None, :, :]).max(axis=2) < 1e-9).argmax(axis=1).tolist()
+    label = list(range(len(P)))
+    for i, f in enumerate(first):  # the first earlier link with the same motion
+        if f < i:
+            label[i] = label[f]
+    group = np.array(label)[pieces.link]
+    a, b = close_pairs(c, h, -_OVERLAP)
     keep = group[a] != group[b]
     a, b = a[keep], b[keep]
-    ov = (np.abs(c[a] - c[b]) - (h[a] + h[b]) < -_OVERLAP).all(axis=1)
-    a, b = a[ov], b[ov]
     return {"a": a, "b": b, "Wa": W[a], "Wb": W[b], "margin": 0.0, "frac": frac}
 
 
@@ -223,7 +249,8 @@ def _worst_per_group(keys: np.ndarray, values: np.ndarray):
     """Indices of the minimum value within each group of equal ``keys`` rows."""
     if not len(values):
         return np.zeros(0, dtype=np.int64)
-    order = np.lexsort((values, *keys.T[::-1]))
+    # depths equal to 1e-12 m are ties (rounding noise must not choose): the first row wins
+    order = np.lexsort((np.round(values, 12), *keys.T[::-1]))
     k = keys[order]
     first = np.ones(len(order), dtype=bool)
     first[1:] = (k[1:] != k[:-1]).any(axis=1)
@@ -241,7 +268,7 @@ def _penetration(kin, pieces, s, tol) -> CheckResult:
             links, names = _names(pieces, kin, a[w], b[w])
             pt = deepest_point(pieces, a[w], b[w], s["Wa"][w], s["Wb"][w])
             issues.append(Issue("penetration", "penetration", -float(D[w]), links, names, point=list(pt)))
-    issues.sort(key=lambda i: -i.amount)
+    issues.sort(key=lambda i: -round(i.amount, 12))  # stable: ties keep their order
     worst = max(0.0, float(-D[cross].min())) if cross.any() else 0.0
     return CheckResult("penetration", not issues, worst, issues)
 
@@ -319,11 +346,12 @@ def _floating(kin, pieces, W0, s, tol) -> CheckResult:
     pcomp = _components(P, pieces.part[a[same]], pieces.part[b[same]])
     has_piece = np.bincount(pieces.part, minlength=P) > 0
     weight = np.bincount(pieces.part, weights=np.prod(2 * pieces.half, axis=1), minlength=P)
-    for li in range(L):
+    hp = np.flatnonzero(has_piece)
+    key = np.unique(pieces.part_link[hp] * P + pcomp[hp]) // P  # link of each (link, component)
+    split = np.unique(key[1:][key[1:] == key[:-1]])
+    for li in split.tolist():
         parts = np.flatnonzero((pieces.part_link == li) & has_piece)
         cs = np.unique(pcomp[parts])
-        if len(cs) < 2:
-            continue
         size = {c: weight[parts[pcomp[parts] == c]].sum() for c in cs}
         main = max(cs, key=lambda c: (size[c], -c))
         for c in cs:
@@ -336,7 +364,7 @@ def _floating(kin, pieces, W0, s, tol) -> CheckResult:
                 continue
             issues.append(Issue("floating", "floating_part", gap, [kin.names[li]],
                                 [pieces.part_names[p] for p in group], detail="does not touch the other parts of its link"))
-    issues.sort(key=lambda i: -i.amount)
+    issues.sort(key=lambda i: -round(i.amount, 12))  # stable: ties keep their order
     worst = max([0.0] + [i.amount for i in issues])
     return CheckResult("floating", not issues, worst, issues)
 
@@ -353,15 +381,22 @@ def _blocker(kin, link: int, j: int) -> int:
     return out
 
 
+def _blockers(kin, pieces, sw, bad):
+    """Moving joint and :func:`_blocker` (link indices, lists) of each sweep row ``bad``."""
+    j = sw["movable"][sw["joint"][sw["scene"][bad]]]
+    lb = pieces.link[sw["b"][bad]]
+    _, first, inv = np.unique(j * kin.n_links + lb, return_index=True, return_inverse=True)
+    k = np.array([_blocker(kin, int(lb[f]), int(j[f])) for f in first.tolist()], dtype=np.int64)[inv]
+    return j.tolist(), k.tolist()
+
+
 def _needs_open(kin, pieces, sw, tol, bad) -> dict:
     """Sweep collisions with a part that another joint moves (a rack behind a
     dishwasher door): re-checked with that joint open; returns {(j, k): depth} of
     the (moving joint, blocking joint) link indices, depth < 0 when opening k clears
     the way for j."""
     pairs = {}
-    for w in bad:
-        j = int(sw["movable"][sw["joint"][sw["scene"][w]]])
-        k = _blocker(kin, int(pieces.link[sw["b"][w]]), j)
+    for j, k in zip(*_blockers(kin, pieces, sw, bad)):  # in order of first occurrence
         if k > 0:
             pairs[(j, k)] = None
     out = {}
@@ -369,17 +404,18 @@ def _needs_open(kin, pieces, sw, tol, bad) -> dict:
         sub_j = kin.subtree(j)[pieces.link]
         sub_k = kin.subtree(k)[pieces.link]
         up = kin.open_values(1.0)[kin.joint_names[k]]
-        A, B, WA, WB = [], [], [], []
-        for q in kin.sweep_values(j, tol.sweep_poses):
-            P = kin.poses({kin.joint_names[j]: q, kin.joint_names[k]: up})
-            W = P[pieces.link] @ pieces.T
-            c, h = world_boxes(pieces, W)
-            a, b = np.flatnonzero(sub_j & ~sub_k), np.flatnonzero(sub_k & ~sub_j)
-            ov = overlapping(c[a], h[a], c[b], h[b], -_OVERLAP)
-            ia, ib = np.nonzero(ov)
-            A.append(a[ia]), B.append(b[ib]), WA.append(W[a[ia]]), WB.append(W[b[ib]])
-        a, b = np.concatenate(A), np.concatenate(B)
-        d = pair_distance(pieces, a, b, np.concatenate(WA), np.concatenate(WB), 0.0) if len(a) else np.zeros(0)
+        qs = kin.sweep_values(j, tol.sweep_poses)
+        Q = np.zeros((len(qs), kin.n_links))
+        Q[:, j], Q[:, k] = qs, up
+        a, b = np.flatnonzero(sub_j & ~sub_k), np.flatnonzero(sub_k & ~sub_j)
+        both = np.concatenate([a, b])
+        W = kin.poses_batch(Q)[:, pieces.link[both]] @ pieces.T[both]  # (S, |a| + |b|, 4, 4)
+        c, h = world_boxes(pieces, W.reshape(-1, 4, 4), np.tile(both, len(qs)))
+        c, h = c.reshape(len(qs), len(both), 3), h.reshape(len(qs), len(both), 3)
+        na = len(a)
+        gap = np.abs(c[:, :na, None] - c[:, None, na:]) - (h[:, :na, None] + h[:, None, na:])
+        si, ia, ib = np.nonzero((gap < -_OVERLAP).all(axis=3))
+        d = (pair_distance(pieces, a[ia], b[ib], W[si, ia], W[si, na + ib], 0.0) if len(ia) else np.zeros(0))
         out[(j, k)] = float(-d.min()) if len(d) else 0.0
     return out
 
@@ -398,13 +434,8 @@ def _sweep_result(kin, pieces, sw, opens, tol) -> CheckResult:
         if cleared:
             info["needs_open"] = {kin.joint_names[j]: sorted(kin.joint_names[k] for jj, k in cleared if jj == j)
                                   for j in sorted({j for j, _ in cleared})}
-            keep = []
-            for w in bad:
-                j = int(sw["movable"][sw["joint"][sw["scene"][w]]])
-                if (j, _blocker(kin, int(pieces.link[sw["b"][w]]), j)) not in cleared:
-                    keep.append(w)
-            bad = np.array(keep, dtype=np.int64)
-            worst = max([0.0] + [float(-D[w]) for w in bad])
+            bad = bad[[jk not in cleared for jk in zip(*_blockers(kin, pieces, sw, bad))]]
+            worst = max(0.0, float(-D[bad].min())) if len(bad) else 0.0
     if len(bad):
         joint = sw["joint"][sw["scene"][bad]]
         keys = np.column_stack([joint, pieces.link[sw["a"][bad]], pieces.link[sw["b"][bad]]])
@@ -427,5 +458,5 @@ def _sweep_result(kin, pieces, sw, opens, tol) -> CheckResult:
                 pt = deepest_point(pieces, s["a"][w], s["b"][w], s["Wa"][w], s["Wb"][w])
                 issues.append(Issue("joint_sweep", "open_penetration", -float(D[w]), links, names, q=float(s["frac"]),
                                     point=list(pt), detail=f"all joints at {s['frac']:g} of their range"))
-    issues.sort(key=lambda i: -i.amount)
+    issues.sort(key=lambda i: -round(i.amount, 12))  # stable: ties keep their order
     return CheckResult("joint_sweep", not issues, worst, issues, info)

@@ -69,7 +69,7 @@ def find_objects(paths) -> list[Path]:
 
 
 def validate_folder(folder, tol: Tolerances = Tolerances(), simulate: bool = True, sim_options=None,
-                    seed: int = 0) -> tuple[Report, dict]:
+                    seed: int = 0, fixed_base: bool | None = None) -> tuple[Report, dict]:
     """Validate the object folder ``folder``.
 
     Parameters
@@ -81,12 +81,16 @@ def validate_folder(folder, tol: Tolerances = Tolerances(), simulate: bool = Tru
     sim_options : artipg.validate.sim.SimOptions, optional
     seed : int
         Seed of the surface samples of mesh geometry.
+    fixed_base : bool, optional
+        Simulate the object mounted instead of dropping it on a floor; by default
+        what its ``annotation.json`` says (``validation.fixed_base``, else its
+        category's policy), False for folders without one.
 
     Returns
     -------
     report : Report
     meta : dict
-        ``{"path", "urdf", "geometry": "exact" | "mesh", "category", "seed"}``.
+        ``{"path", "urdf", "geometry": "exact" | "mesh", "category", "seed", "fixed_base"}``.
     """
     folder = Path(folder)
     urdf = find_urdf(folder)
@@ -100,11 +104,31 @@ def validate_folder(folder, tol: Tolerances = Tolerances(), simulate: bool = Tru
     else:
         kin, pieces = load_urdf_geometry(urdf, np.random.default_rng([seed, 0x6E0]))
         report = Report(run_checks(kin, pieces, tol), tol.to_json())
+    if fixed_base is None:
+        fixed_base = annotated_fixed_base(folder / "annotation.json")
+    meta["fixed_base"] = bool(fixed_base)
     if simulate:
         from artipg.validate.sim import SimOptions, simulate_urdf
 
-        report.checks["simulator"] = simulate_urdf(urdf, sim_options or SimOptions())
+        report.checks["simulator"] = simulate_urdf(urdf, sim_options or SimOptions(), fixed_base)
     return report, meta
+
+
+def annotated_fixed_base(annotation: Path) -> bool:
+    """Whether the object of ``annotation`` (an ``annotation.json``, possibly missing)
+    is a fixture: its validation report's ``fixed_base``, else its category's policy."""
+    from artipg.validate.sim import category_fixed_base
+
+    try:
+        ann = json.loads(Path(annotation).read_text())
+    except (OSError, ValueError):
+        return False
+    if "fixed_base" in ann:
+        return bool(ann["fixed_base"])
+    rep = ann.get("validation") or {}
+    if "fixed_base" in rep:
+        return bool(rep["fixed_base"])
+    return category_fixed_base(str(ann.get("category")))
 
 
 # ------------------------------------------------------------------ artipg folders

@@ -119,6 +119,47 @@ class Kinematics:
         v = np.linspace(lo, hi, n + 1)
         return v[np.abs(v) > 1e-12]
 
+    def sweep_table(self, n: int = 16) -> tuple[np.ndarray, np.ndarray]:
+        """:meth:`sweep_values` of every movable joint, flattened (same values, same order).
+
+        Returns
+        -------
+        joint : (S,) int64
+            Index into :meth:`movable` of each scene's joint.
+        q : (S,) float64
+            Its joint value.
+        """
+        movable = self.movable()
+        J = len(movable)
+        if not J:
+            return np.zeros(0, dtype=np.int64), np.zeros(0)
+        cont = np.array([self.joint_types[i] == "continuous" for i in movable])
+        lo = np.where(cont, 0.0, self.limits[movable, 0])
+        hi = np.where(cont, 0.0, self.limits[movable, 1])
+        k = np.arange(n + 1, dtype=float)
+        # np.linspace(lo, hi, n + 1) row by row (same arithmetic: k * step + lo, last = hi)
+        V = k[None, :] * ((hi - lo) / n)[:, None] + lo[:, None]
+        V[:, -1] = hi
+        keep = np.abs(V) > 1e-12
+        if cont.any():
+            V[cont, :n] = 2.0 * np.pi * np.arange(1, n + 1) / (n + 1)
+            keep[cont] = np.arange(n + 1) < n
+        joint = np.nonzero(keep)[0]
+        return joint, V[keep]
+
+    def poses_batch(self, Q: np.ndarray) -> np.ndarray:
+        """Link poses (S, L, 4, 4) for joint values ``Q`` (S, L) (one value per link's
+        parent joint; ignored for fixed joints), like :meth:`poses` for each row."""
+        S = len(Q)
+        T = np.empty((S, self.n_links, 4, 4))
+        T[:, 0] = np.eye(4)
+        for i in range(1, self.n_links):
+            Ti = T[:, self.parent[i]] @ self.origin[i]
+            if self.joint_types[i] in MOVABLE and Q[:, i].any():  # q = 0: the identity motion
+                Ti = Ti @ motion(self.joint_types[i], self.axis[i], Q[:, i])
+            T[:, i] = Ti
+        return T
+
     def open_values(self, frac: float) -> dict:
         """Every movable joint at ``frac`` of its range (continuous: ``frac`` * π)."""
         q = {}

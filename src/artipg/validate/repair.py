@@ -92,7 +92,8 @@ def generate_valid(category, seed: int, overrides: dict | None = None, tol: Tole
     -------
     ArticulatedObject
         With ``obj.seed == seed`` and ``obj.report`` holding the validation report
-        (``"ok"``, ``"checks"``, ``"tolerances"``) and ``"repair"``: iterations,
+        (``"ok"``, ``"checks"``, ``"tolerances"``), ``"fixed_base"`` (the category's
+        mounting policy, which the simulator check follows) and ``"repair"``: iterations,
         accepted moves, penalties, the parameters changed, and the seed the object
         was generated from when it had to be replaced. If nothing passes within the
         budget, the least-penalised candidate is returned with ``"ok": false``.
@@ -101,13 +102,14 @@ def generate_valid(category, seed: int, overrides: dict | None = None, tol: Tole
         import artipg
 
         category = artipg.get_category(category)
+    fixed_base = bool(getattr(category, "fixed_base", False))
     attempts = []
     best = None
     for attempt in range(budget.replacements + 1):
         src = int(seed) if attempt == 0 else replacement_seed(seed, attempt)
         obj, report, log = anneal(category, src, dict(overrides or {}), tol, budget, attempt)
         if report.ok and simulate:
-            report = check_object(obj, tol, simulate=True, sim_options=sim_options)
+            report = check_object(obj, tol, simulate=True, sim_options=sim_options, fixed_base=fixed_base)
         log["ok"] = report.ok
         attempts.append(log)
         if best is None or (report.ok, -report.penalty()) > (best[1].ok, -best[1].penalty()):
@@ -116,6 +118,7 @@ def generate_valid(category, seed: int, overrides: dict | None = None, tol: Tole
             break
     obj, report, log = best
     out = report.to_json()
+    out["fixed_base"] = fixed_base
     out["repair"] = {
         "iterations": sum(a["iterations"] for a in attempts),
         "replaced": log["seed"] != int(seed),

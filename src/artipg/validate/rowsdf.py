@@ -4,6 +4,12 @@
 parameters ``P[k]`` (K, p), in one numpy pass for any mix of sizes. The formulas are
 the templates' own (:mod:`artipg.geometry`), batched; ``tests/test_validate.py``
 checks that both agree. Metres, local frames, negative inside.
+
+``PREPARE[geom](P)`` returns ``f(x)`` with ``f(x) == ROW_SDF[geom](P, x)`` (the very
+same arithmetic): everything that depends on the parameters only (polygon edges,
+wedge planes) is computed once, so that evaluating the same rows at many points in
+turn (the projections of :func:`artipg.validate.contacts.refine_distance`) costs only
+the point-dependent operations.
 """
 
 from __future__ import annotations
@@ -24,11 +30,40 @@ def _cols(x):
 
 def cuboid_rows(P: np.ndarray, x: np.ndarray) -> np.ndarray:
     """Boxes of extents ``P[:, :3]`` centred at the origin."""
-    X, Y, Z = _cols(x)
+    return prepare_cuboid(P)(x)
+
+
+def prepare_cuboid(P: np.ndarray):
     S = np.ascontiguousarray(P[:, :3].T) * 0.5
-    qx, qy, qz = np.abs(X) - S[0], np.abs(Y) - S[1], np.abs(Z) - S[2]
-    ox, oy, oz = np.maximum(qx, 0.0), np.maximum(qy, 0.0), np.maximum(qz, 0.0)
-    return np.sqrt(ox * ox + oy * oy + oz * oz) + np.minimum(np.maximum(np.maximum(qx, qy), qz), 0.0)
+
+    def f(x):
+        X, Y, Z = _cols(x)
+        qx, qy, qz = np.abs(X) - S[0], np.abs(Y) - S[1], np.abs(Z) - S[2]
+        ox, oy, oz = np.maximum(qx, 0.0), np.maximum(qy, 0.0), np.maximum(qz, 0.0)
+        return np.sqrt(ox * ox + oy * oy + oz * oz) + np.minimum(np.maximum(np.maximum(qx, qy), qz), 0.0)
+
+    return f
+
+
+def prepare_polygon(px, py):
+    """``f(qx, qy)``: signed distance of 2-D points (``qx``, ``qy``: (K,)) to one polygon
+    per point with vertex coordinates ``px``, ``py`` (V, K) (see :func:`polygon_rows`)."""
+    bx, by = np.roll(px, -1, axis=0), np.roll(py, -1, axis=0)
+    ex, ey = bx - px, by - py
+    ee = np.maximum(ex * ex + ey * ey, 1e-30)
+    ey_safe = np.where(np.abs(ey) > 1e-30, ey, 1e-30)
+
+    def f(qx, qy):
+        wx, wy = qx - px, qy - py
+        t = np.clip((wx * ex + wy * ey) / ee, 0.0, 1.0)
+        dx, dy = wx - t * ex, wy - t * ey
+        dist = np.sqrt(np.min(dx * dx + dy * dy, axis=0))
+        cond = (py > qy) != (by > qy)
+        xint = px + (qy - py) * ex / ey_safe
+        inside = np.count_nonzero(cond & (qx < xint), axis=0) % 2 == 1
+        return np.where(inside, -dist, dist)
+
+    return f
 
 
 def polygon_rows(qx, qy, px, py) -> np.ndarray:
@@ -38,73 +73,152 @@ def polygon_rows(qx, qy, px, py) -> np.ndarray:
     Polygons with fewer vertices repeat their last vertex (zero-length edges are
     harmless). Negative inside (even-odd rule).
     """
-    bx, by = np.roll(px, -1, axis=0), np.roll(py, -1, axis=0)
-    ex, ey = bx - px, by - py
-    wx, wy = qx - px, qy - py
-    ee = np.maximum(ex * ex + ey * ey, 1e-30)
-    t = np.clip((wx * ex + wy * ey) / ee, 0.0, 1.0)
-    dx, dy = wx - t * ex, wy - t * ey
-    dist = np.sqrt(np.min(dx * dx + dy * dy, axis=0))
-    cond = (py > qy) != (by > qy)
-    xint = px + (qy - py) * ex / np.where(np.abs(ey) > 1e-30, ey, 1e-30)
-    inside = np.count_nonzero(cond & (qx < xint), axis=0) % 2 == 1
-    return np.where(inside, -dist, dist)
+    return prepare_polygon(px, py)(qx, qy)
+
+
+def prepare_wedge(arc: np.ndarray):
+    """``f(X, Y)``: row-wise :func:`artipg.geometry.base.wedge_sdf` for arcs (K,) radians."""
+    ns, c = -np.sin(arc), np.cos(arc)
+    small = arc <= np.pi
+    full = arc >= TWO_PI - 1e-9
+
+    def f(X, Y):
+        d0 = -Y
+        d1 = ns * X + c * Y
+        out = np.where(small, np.maximum(d0, d1), np.minimum(d0, d1))
+        return np.where(full, -np.inf, out)
+
+    return f
 
 
 def wedge_rows(X, Y, arc: np.ndarray) -> np.ndarray:
     """Row-wise :func:`artipg.geometry.base.wedge_sdf` (point components, arc (K,) radians)."""
-    d0 = -Y
-    d1 = -np.sin(arc) * X + np.cos(arc) * Y
-    out = np.where(arc <= np.pi, np.maximum(d0, d1), np.minimum(d0, d1))
-    return np.where(arc >= TWO_PI - 1e-9, -np.inf, out)
+    return prepare_wedge(arc)(X, Y)
 
 
-def _profile_rows(x, r_lo_bot, r_hi_bot, r_hi_top, r_lo_top, h):
+def _prepare_profile(r_lo_bot, r_hi_bot, r_hi_top, r_lo_top, h):
     """(ρ, z) quadrilateral profiles [(r_lo_bot, -h/2), (r_hi_bot, -h/2), (r_hi_top, h/2),
-    (r_lo_top, h/2)] of solids of revolution; returns the profile SDF and X, Y."""
-    X, Y, Z = _cols(x)
-    rho = np.hypot(X, Y)
-    px = np.stack([r_lo_bot, r_hi_bot, r_hi_top, r_lo_top])
-    py = np.stack([-h / 2, -h / 2, h / 2, h / 2])
-    return polygon_rows(rho, Z, px, py), X, Y
+    (r_lo_top, h/2)] of solids of revolution: ``f(x)`` -> profile SDF, X, Y."""
+    poly = prepare_polygon(np.stack([r_lo_bot, r_hi_bot, r_hi_top, r_lo_top]), np.stack([-h / 2, -h / 2, h / 2, h / 2]))
+
+    def f(x):
+        X, Y, Z = _cols(x)
+        return poly(np.hypot(X, Y), Z), X, Y
+
+    return f
 
 
-def frustum_rows(P, x):
+def prepare_frustum(P):
     r0, r1, h = P[:, 0], P[:, 1], P[:, 2]
-    return _profile_rows(x, -r0, r0, r1, -r1, h)[0]
+    prof = _prepare_profile(-r0, r0, r1, -r1, h)
+    return lambda x: prof(x)[0]
 
 
-def ring_rows(P, x):
+def prepare_ring(P):
     ro, ri, h, arc, tp = P[:, 0], P[:, 1], P[:, 2], P[:, 3], P[:, 4]
-    d, X, Y = _profile_rows(x, ri, ro, ro + tp, ri + tp, h)
-    return np.maximum(d, wedge_rows(X, Y, arc))
+    prof = _prepare_profile(ri, ro, ro + tp, ri + tp, h)
+    wedge = prepare_wedge(arc)
+
+    def f(x):
+        d, X, Y = prof(x)
+        return np.maximum(d, wedge(X, Y))
+
+    return f
 
 
-def sphere_rows(P, x):
-    X, Y, Z = _cols(x)
+def prepare_quad_profiles(P_frustum, P_ring):
+    """One evaluator for frusta (rows ``P_frustum`` (F, 3+)) followed by rings (rows
+    ``P_ring`` (R, 5)): ``f(x)`` (F + R,) equals :func:`prepare_frustum` on the first F
+    points and :func:`prepare_ring` on the others, with one polygon pass for both
+    (a frustum is a quadrilateral (ρ, z) profile turned a full turn)."""
+    r0, r1, hf = P_frustum[:, 0], P_frustum[:, 1], P_frustum[:, 2]
+    ro, ri, hr, arc, tp = P_ring[:, 0], P_ring[:, 1], P_ring[:, 2], P_ring[:, 3], P_ring[:, 4]
+    nf = len(r0)
+    prof = _prepare_profile(np.concatenate([-r0, ri]), np.concatenate([r0, ro]), np.concatenate([r1, ro + tp]),
+                            np.concatenate([-r1, ri + tp]), np.concatenate([hf, hr]))
+    wedge = prepare_wedge(arc)
+
+    def f(x):
+        d, X, Y = prof(x)
+        d[nf:] = np.maximum(d[nf:], wedge(X[nf:], Y[nf:]))
+        return d
+
+    return f
+
+
+def prepare_sphere(P):
     R, lo, hi = P[:, 0], P[:, 1], P[:, 2]
-    return np.maximum(np.maximum(np.sqrt(X * X + Y * Y + Z * Z) - R, lo - Z), Z - hi)
+
+    def f(x):
+        X, Y, Z = _cols(x)
+        return np.maximum(np.maximum(np.sqrt(X * X + Y * Y + Z * Z) - R, lo - Z), Z - hi)
+
+    return f
 
 
-def torus_rows(P, x):
-    X, Y, Z = _cols(x)
+def prepare_torus(P):
     R, r, arc = P[:, 0], P[:, 1], P[:, 2]
-    return np.maximum(np.hypot(np.hypot(X, Y) - R, Z) - r, wedge_rows(X, Y, arc))
+    wedge = prepare_wedge(arc)
+
+    def f(x):
+        X, Y, Z = _cols(x)
+        return np.maximum(np.hypot(np.hypot(X, Y) - R, Z) - r, wedge(X, Y))
+
+    return f
 
 
-def prism_rows(P, x):
-    X, Y, Z = _cols(x)
+def prepare_prism(P):
     r, h, n = P[:, 0], P[:, 1], P[:, 2]
     k = np.minimum(np.arange(MAX_SIDES)[:, None], n[None, :] - 1)  # pad with the last vertex
     a = np.pi / n + 2 * np.pi * k / n
-    return np.maximum(polygon_rows(X, Y, r * np.cos(a), r * np.sin(a)), np.abs(Z) - h / 2)
+    poly = prepare_polygon(r * np.cos(a), r * np.sin(a))
+
+    def f(x):
+        X, Y, Z = _cols(x)
+        return np.maximum(poly(X, Y), np.abs(Z) - h / 2)
+
+    return f
+
+
+def prepare_tri_prism(P):
+    w, t, a, d = P[:, 0], P[:, 1], P[:, 2], P[:, 3]
+    z = np.zeros_like(w)
+    poly = prepare_polygon(np.stack([-w / 2, w / 2, a]), np.stack([z, z, t]))
+
+    def f(x):
+        X, Y, Z = _cols(x)
+        return np.maximum(poly(X, Y), np.abs(Z) - d / 2)
+
+    return f
+
+
+#: Geometry template -> ``prepare(P (K, p)) -> f(x (K, 3)) -> (K,)``.
+PREPARE = {Cuboid: prepare_cuboid, Frustum: prepare_frustum, Ring: prepare_ring, Sphere: prepare_sphere,
+           Torus: prepare_torus, Prism: prepare_prism, TriPrism: prepare_tri_prism}
+
+
+def frustum_rows(P, x):
+    return prepare_frustum(P)(x)
+
+
+def ring_rows(P, x):
+    return prepare_ring(P)(x)
+
+
+def sphere_rows(P, x):
+    return prepare_sphere(P)(x)
+
+
+def torus_rows(P, x):
+    return prepare_torus(P)(x)
+
+
+def prism_rows(P, x):
+    return prepare_prism(P)(x)
 
 
 def tri_prism_rows(P, x):
-    X, Y, Z = _cols(x)
-    w, t, a, d = P[:, 0], P[:, 1], P[:, 2], P[:, 3]
-    z = np.zeros_like(w)
-    return np.maximum(polygon_rows(X, Y, np.stack([-w / 2, w / 2, a]), np.stack([z, z, t])), np.abs(Z) - d / 2)
+    return prepare_tri_prism(P)(x)
 
 
 #: Geometry template -> row-wise signed distance ``f(P (K, p), x (K, 3)) -> (K,)``.

@@ -11,6 +11,12 @@ mesh of a URDF folder. Every piece carries
   area-proportional per surface component with a minimum per component, plus the
   corners and edge points of boxes, so that small faces (a handle post's end cap)
   and sharp features are never missed. Box-box pairs never need samples.
+
+A piece's samples depend on the object and the sample stream only, never on which
+pieces were asked for before or together with it: each geometry template has its own
+stream, from which all pieces of that template are drawn together on first use (mesh
+pieces: one stream per piece). Drawing only the requested pieces from one shared
+stream made a check's verdict depend on the order of earlier queries.
 """
 
 from __future__ import annotations
@@ -19,7 +25,7 @@ import numpy as np
 
 from artipg.geometry.box import Cuboid, RectRing
 from artipg.geometry.revolve import Frustum, Ring, Sphere, Torus
-from artipg.validate.rowsdf import ROW_SDF
+from artipg.validate.rowsdf import PREPARE, prepare_quad_profiles
 
 #: Surface samples per square metre, and the per-component minimum / maximum.
 DENSITY = 2000.0
@@ -65,25 +71,31 @@ class Pieces:
         self.part_names = list(part_names)
         self.part_link = np.asarray(part_link, dtype=np.int64)
         self.meshes = meshes or {}
-        self._rng = rng
-        kinds: list = []
-        for g in self.geom:
-            if g not in kinds:
-                kinds.append(g)
+        # one stream per geometry template (meshes: per piece), children of this seed
+        self._seed = int(rng.integers(2 ** 63))
+        index: dict = {}
+        kind = [index.setdefault(g, len(index)) for g in self.geom]  # kinds in order of appearance
+        kinds = list(index)
         self._kinds = kinds
-        self._kind = np.array([kinds.index(g) for g in self.geom], dtype=np.int64)
+        self._kind = np.array(kind, dtype=np.int64)
         self._nparams = [len(g.params) if g is not None else 0 for g in kinds]
-        self.is_box = np.array([g is Cuboid for g in self.geom], dtype=bool)
+        M = len(self.geom)
+
+        def of_kind(*gs):
+            return np.array([g in gs for g in kinds] + [False], dtype=bool)[self._kind if M else np.zeros(0, int)]
+
+        self.is_box = of_kind(Cuboid)
         # full solids of revolution about their local z axis (frustum, full ring or
         # torus, sphere): unchanged by a turn about that axis
-        full = self.params[:, 3] >= 2 * np.pi - 1e-9 if self.params.shape[1] > 3 else np.zeros(len(self.geom), bool)
-        arc = self.params[:, 2] >= 2 * np.pi - 1e-9 if self.params.shape[1] > 2 else np.zeros(len(self.geom), bool)
-        self.symmetric = np.array([g in (Frustum, Sphere) for g in self.geom], dtype=bool)
-        self.symmetric |= np.array([g is Ring for g in self.geom], dtype=bool) & full
-        self.symmetric |= np.array([g is Torus for g in self.geom], dtype=bool) & arc
-        M = len(self.geom)
+        full = self.params[:, 3] >= 2 * np.pi - 1e-9 if self.params.shape[1] > 3 else np.zeros(M, bool)
+        arc = self.params[:, 2] >= 2 * np.pi - 1e-9 if self.params.shape[1] > 2 else np.zeros(M, bool)
+        # whole balls (a sphere not cut by its slab): exact ball-ball distances
+        P3 = self.params[:, :3] if self.params.shape[1] >= 3 else np.zeros((M, 3))
+        self.is_ball = of_kind(Sphere) & (P3[:, 1] <= -P3[:, 0]) & (P3[:, 2] >= P3[:, 0])
+        self.symmetric = of_kind(Frustum, Sphere) | (of_kind(Ring) & full) | (of_kind(Torus) & arc)
         self.start = np.zeros(M, dtype=np.int64)
         self.count = np.zeros(M, dtype=np.int64)
+        self._drawn = np.zeros(M, dtype=bool)
         self._chunks: list = []
         self._size = 0
         self._points = np.zeros((0, 3))
@@ -106,50 +118,101 @@ class Pieces:
         return self.points[self.start[i]:self.start[i] + self.count[i]]
 
     def require(self, idx: np.ndarray) -> None:
-        """Draw the surface samples of the pieces ``idx`` that have none yet."""
-        idx = np.unique(idx)
-        idx = idx[self.count[idx] == 0]
+        """Draw the surface samples of the pieces ``idx`` that have none yet.
+
+        Primitive pieces are drawn per geometry template, all pieces of a template at
+        once from that template's own stream; mesh pieces one by one, each from its
+        own stream. The samples of a piece are thus the same whatever was drawn before.
+        """
+        idx = np.unique(np.asarray(idx, dtype=np.int64))
+        idx = idx[~self._drawn[idx]]
         if not len(idx):
             return
-        kinds = self._kind[idx]
-        for k in np.unique(kinds):
-            rows = idx[kinds == k]
+        for k in np.unique(self._kind[idx]).tolist():
             g = self._kinds[k]
             if g is None:
-                p, owner = _sample_meshes([self.meshes[int(r)] for r in rows], rows, self._rng)
+                rows = idx[self._kind[idx] == k]
+                streams = [self._stream(len(self._kinds) + int(r)) for r in rows]
+                p, owner = _sample_meshes([self.meshes[int(r)] for r in rows], rows, streams)
             else:
+                rows = np.flatnonzero(self._kind == k)
                 P = self.params[rows, :self._nparams[k]]
-                p, owner = _sample_group(g, P, rows, self._rng)
+                p, owner = _sample_group(g, P, rows, self._stream(k))
             order = np.argsort(owner, kind="stable")
             cnt = np.bincount(owner, minlength=self.n)[rows]
             self.start[rows] = self._size + np.cumsum(cnt) - cnt
             self.count[rows] = cnt
+            self._drawn[rows] = True
             self._chunks.append(p[order])
             self._size += len(p)
+
+    def _stream(self, key: int) -> np.random.Generator:
+        """The sample stream ``key`` (a template index, or a mesh piece's) of this object."""
+        return np.random.default_rng([self._seed, key])
 
     def sdf(self, rows: np.ndarray, x: np.ndarray) -> np.ndarray:
         """Signed distance (K,) of points ``x`` (K, 3), each in the frame of its piece
         ``rows`` (K,), to that piece (metres, negative inside)."""
-        out = np.empty(len(rows))
         if not len(rows):
-            return out
+            return np.empty(0)
+        return self.prepare(rows)(x)
+
+    def prepare(self, rows: np.ndarray):
+        """``f(x)`` equal to ``self.sdf(rows, x)`` for points ``x`` (len(rows), 3), with
+        the per-row work (parameters, polygon edges) done once: for evaluating the same
+        rows at several point sets in turn.
+
+        Rows are evaluated per geometry template, frusta and rings together (both are
+        quadrilateral profiles turned about z; see
+        :func:`artipg.validate.rowsdf.prepare_quad_profiles`).
+        """
+        rows = np.asarray(rows, dtype=np.int64)
         kind = self._kind[rows]
-        for k in np.unique(kind):
+        kinds = np.unique(kind).tolist()
+        if len(kinds) == 1:
+            return self._prepare_kind(kinds[0], rows)
+        groups = []
+        kf = self._kinds.index(Frustum) if Frustum in self._kinds else -1
+        kr = self._kinds.index(Ring) if Ring in self._kinds else -1
+        if kf in kinds and kr in kinds:
+            sf, sr = np.flatnonzero(kind == kf), np.flatnonzero(kind == kr)
+            fn = prepare_quad_profiles(self.params[rows[sf], :3], self.params[rows[sr], :5])
+            groups.append((np.concatenate([sf, sr]), fn))
+            kinds = [k for k in kinds if k not in (kf, kr)]
+        for k in kinds:
             sel = np.flatnonzero(kind == k)
-            g = self._kinds[k]
-            r = rows[sel]
-            if g in ROW_SDF:
-                out[sel] = ROW_SDF[g](self.params[r, :self._nparams[k]], x[sel])
-                continue
-            order = np.argsort(r, kind="stable")
-            cuts = np.flatnonzero(np.diff(r[order])) + 1
-            for chunk in np.split(order, cuts):
-                piece = int(r[chunk[0]])
-                i = sel[chunk]
-                if g is None:
-                    out[i] = _mesh_sdf(self.meshes[piece], x[i])
-                else:
-                    out[i] = g.sdf(tuple(self.params[piece, :self._nparams[k]]), x[i])
+            groups.append((sel, self._prepare_kind(k, rows[sel])))
+        if len(groups) == 1:
+            sel, fn = groups[0]
+            return lambda x: _scatter(len(rows), sel, fn(x[sel]))
+
+        def f(x):
+            out = np.empty(len(rows))
+            for sel, fn in groups:
+                out[sel] = fn(x[sel])
+            return out
+
+        return f
+
+    def _prepare_kind(self, k: int, r: np.ndarray):
+        """Evaluator of rows ``r`` that all have geometry kind ``k``."""
+        g = self._kinds[k]
+        if g in PREPARE:
+            return PREPARE[g](self.params[r, :self._nparams[k]])
+        return lambda x: self._sdf_pieces(g, k, r, x)
+
+    def _sdf_pieces(self, g, k: int, r: np.ndarray, x: np.ndarray) -> np.ndarray:
+        """Signed distances of rows ``r`` of kind ``k`` without a row-wise SDF (meshes,
+        other templates), one piece at a time."""
+        out = np.empty(len(r))
+        order = np.argsort(r, kind="stable")
+        cuts = np.flatnonzero(np.diff(r[order])) + 1
+        for chunk in np.split(order, cuts):
+            piece = int(r[chunk[0]])
+            if g is None:
+                out[chunk] = _mesh_sdf(self.meshes[piece], x[chunk])
+            else:
+                out[chunk] = g.sdf(tuple(self.params[piece, :self._nparams[k]]), x[chunk])
         return out
 
     # ------------------------------------------------------------ constructors
@@ -197,6 +260,12 @@ class Pieces:
                    [p.name for p in obj.parts], obj.part_link, rng)
 
 
+def _scatter(n: int, sel: np.ndarray, values: np.ndarray) -> np.ndarray:
+    out = np.empty(n)
+    out[sel] = values
+    return out
+
+
 def _mesh_sdf(mesh, x: np.ndarray) -> np.ndarray:
     """Signed distance to a triangle mesh (negative inside), metres; the sign comes
     from ray tests, so it is reliable for closed meshes only."""
@@ -205,11 +274,12 @@ def _mesh_sdf(mesh, x: np.ndarray) -> np.ndarray:
     return -trimesh.proximity.signed_distance(mesh, x)
 
 
-def _sample_meshes(meshes, rows, rng):
+def _sample_meshes(meshes, rows, streams):
+    """Surface samples of mesh pieces ``rows``, each drawn from its own stream."""
     import trimesh
 
     pts, owner = [], []
-    for r, mesh in zip(rows, meshes):
+    for r, mesh, rng in zip(rows, meshes, streams):
         n = int(np.clip(np.ceil(mesh.area * DENSITY * 2), 64, 4000))
         p, _ = trimesh.sample.sample_surface(mesh, n, seed=int(rng.integers(2 ** 31)))
         v = np.asarray(mesh.vertices)[:: max(1, len(mesh.vertices) // 512)]

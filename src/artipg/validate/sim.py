@@ -8,22 +8,42 @@ For each engine (short simulations, a few hundred milliseconds per object):
   ``URDF_USE_SELF_COLLISION | URDF_USE_SELF_COLLISION_INCLUDE_PARENT`` with
   ``getClosestPoints``; MuJoCo ``mjDSBL_FILTERPARENT``), no two links of the
   collision geometry penetrate deeper than the tolerance at rest: this is where a
-  hollow body exported as one convex hull shows up. pybullet pads every convex
-  mesh of a URDF with a fixed 1 mm collision margin (:data:`PYBULLET_MESH_MARGIN`),
-  so touching meshes read as up to 2 mm deep there and its tolerance is 2 mm
-  wider; MuJoCo measures the exported geometry exactly;
-- **drop**: the object, free on a floor with its joints held at rest, settles for
-  ``settle_seconds`` and then moves less than ``drift_tol`` in ``drop_seconds``
-  (largest displacement of the corners of the root link's bounding box); the
-  engines' default contact filters apply here;
+  hollow body exported as one convex hull shows up;
 - **drive**: with the root fixed, contacts frictionless and gravity off (so that only
   geometry can block a joint, not friction between touching parts or a servo too
   weak to lift a lid), position control drives all movable joints from rest to their
-  upper limits and then back to their lower limits (continuous joints: +-π/2); each
-  must get within ``joint_tol`` of its target. A joint that is still closing in on
-  its target gets more time (up to three times ``drive_seconds``); one that stalls is
-  blocked. Joints that miss are driven again alone (the others held at rest) to tell
-  a blocked joint from one that only interferes with another.
+  upper limits and then back to their lower limits (continuous joints have no
+  limits: they must turn a quarter turn either way, +-pi/2); each must get within
+  ``joint_tol`` of its target. A joint that is still closing in on its target gets
+  more time (up to three times ``drive_seconds``); one that stalls is blocked.
+  Joints that miss are driven again alone, first with the others held at rest, then
+  with the others opened first (a dishwasher rack comes out only past its open door):
+  a joint is blocked when it misses both ways;
+- **drop**: the object, free on a floor with its joints held rigidly at rest (made
+  fixed in a copy of the URDF), settles for ``settle_seconds`` and then moves less
+  than ``drift_tol`` in ``drop_seconds`` (largest displacement of the corners of the
+  root link's bounding box); the engines' default contact filters apply here.
+  Fixtures (``Category.fixed_base``: faucets, switches, doors, windows) are used
+  mounted: they are not dropped, and ``info["drop"]`` says ``"fixed base"``.
+
+Engine settings, each fixing a simulator artefact that would otherwise read as a
+defect (they never relax a tolerance):
+
+- pybullet pads every convex mesh with a 1 mm collision margin
+  (:data:`PYBULLET_MESH_MARGIN`, fixed for URDF links) and turns cylinders into
+  padded 32-gon hulls: cylinders are loaded as exact shapes
+  (``URDF_USE_IMPLICIT_CYLINDER``) and every mesh as its hull shrunk by the margin
+  (:func:`pybullet_urdf`), so that pybullet sees the exported geometry as MuJoCo does
+  (pieces thinner than 2 mm keep part of the padding, which the rest-contact
+  tolerance adds back, per link);
+- pybullet keeps contact points from earlier steps until they drift 2 cm; a lid's edge
+  sliding round a hinge barrel leaves stale points behind that jam it
+  (:data:`CONTACT_BREAKING`);
+- a contact no joint can move along (a knuckle between its cheeks pressed along the
+  hinge axis, a knob's back face on its panel, a cap on its neck) has zero effective
+  mass: pybullet divides by it (:data:`GLOBAL_CFM` regularises) and MuJoCo makes it
+  infinitely stiff when the body cannot translate (:data:`INVWEIGHT_FLOOR`); either
+  way round-off turns the unbounded force into torque that flings the part.
 """
 
 from __future__ import annotations
@@ -41,10 +61,27 @@ import numpy as np
 from artipg.validate.report import CheckResult, Issue
 
 
-#: Collision margin (metres) pybullet's URDF importer gives every convex mesh (not
-#: changeable from Python for URDF links): reported distances are this much smaller
-#: per mesh involved.
+#: Collision margin (metres) by which pybullet's URDF importer pads every convex mesh
+#: (not changeable from Python for URDF links; :func:`pybullet_urdf` compensates).
 PYBULLET_MESH_MARGIN = 1e-3
+
+#: Penetration (metres) pybullet's solver leaves alone instead of pushing the bodies
+#: apart (``contactSlop``): parts that touch, as many do at rest, stay put.
+CONTACT_SLOP = 5e-4
+
+#: How far (metres) a cached contact point of pybullet may drift before it is dropped
+#: (``contactBreakingThreshold``, 2 cm by default). Its persistent contact manifolds
+#: keep points from earlier steps; where a part slides along a curved surface (a lid's
+#: edge round a hinge barrel), stale points left behind read as deep penetrations and
+#: jam the joint. A few millimetres suits objects built to millimetres.
+CONTACT_BREAKING = 2e-3
+
+#: Constraint force mixing of pybullet's solver (``globalCFM``, 0 by default). A
+#: contact whose normal no joint can move along (a hinge knuckle between its cheeks,
+#: pressed along the hinge axis) is a constraint row with a zero Jacobian; pybullet
+#: divides by its zero effective mass and the resulting impulses fling the links
+#: apart. A tiny regularisation keeps such rows finite and leaves the others alone.
+GLOBAL_CFM = 1e-6
 
 
 @dataclass(frozen=True)
@@ -83,9 +120,16 @@ class SimOptions:
         return {k: list(v) if isinstance(v, tuple) else v for k, v in asdict(self).items()}
 
 
-def simulate_object(obj, opts: SimOptions = SimOptions()) -> CheckResult:
-    """Export ``obj`` (URDF + meshes) to a temporary folder and simulate it."""
+def simulate_object(obj, opts: SimOptions = SimOptions(), fixed_base: bool | None = None) -> CheckResult:
+    """Export ``obj`` (URDF + meshes) to a temporary folder and simulate it.
+
+    ``fixed_base`` defaults to the registered category's policy
+    (:func:`category_fixed_base`): fixtures are simulated mounted, not dropped.
+    """
     from artipg.export.urdf import build_urdf, urdf_text
+
+    if fixed_base is None:
+        fixed_base = category_fixed_base(obj.category)
 
     robot, meshes = build_urdf(obj, visuals=False)
     with tempfile.TemporaryDirectory(prefix="artipg-sim-") as d:
@@ -95,18 +139,38 @@ def simulate_object(obj, opts: SimOptions = SimOptions()) -> CheckResult:
             p.write_text(text)
         urdf = Path(d) / "mobility.urdf"
         urdf.write_text(urdf_text(robot))
-        return simulate_urdf(urdf, opts)
+        return simulate_urdf(urdf, opts, fixed_base)
 
 
-def simulate_urdf(urdf, opts: SimOptions = SimOptions()) -> CheckResult:
-    """Run the simulator checks on the URDF file ``urdf`` (see module docstring)."""
+def category_fixed_base(name: str) -> bool:
+    """``fixed_base`` of the registered category ``name`` (False for unknown names)."""
+    import artipg
+
+    try:
+        return bool(getattr(artipg.get_category(name), "fixed_base", False))
+    except (KeyError, ValueError):
+        return False
+
+
+def simulate_urdf(urdf, opts: SimOptions = SimOptions(), fixed_base: bool = False) -> CheckResult:
+    """Run the simulator checks on the URDF file ``urdf`` (see module docstring).
+
+    Parameters
+    ----------
+    urdf : path
+    opts : SimOptions
+    fixed_base : bool
+        The object is a fixture (mounted on a wall, a sink, in a frame): it is not
+        dropped on a floor; ``info["drop"]`` says ``"fixed base"`` instead of giving a
+        drift.
+    """
     urdf = Path(urdf).resolve()
     joints = _urdf_joints(urdf)
-    issues, info = [], {}
+    issues, info = [], {"fixed_base": bool(fixed_base)}
     for engine in opts.engines:
         run = {"pybullet": _pybullet, "mujoco": _mujoco}[engine]
         try:
-            eng_issues, eng_info = run(urdf, joints, opts)
+            eng_issues, eng_info = run(urdf, joints, opts, fixed_base)
         except Exception as e:  # an engine that cannot load the file is a failure, not a crash
             eng_issues, eng_info = [Issue("simulator", "load_failed", 1.0, detail=f"{engine}: {e}".strip()[:300])], {}
         issues += eng_issues
@@ -150,6 +214,22 @@ def _urdf_joints(urdf: Path) -> list[_Joint]:
     return out
 
 
+def rigid_urdf(urdf: Path, out: Path) -> Path:
+    """Write a copy of ``urdf`` to ``out`` with every movable joint made fixed.
+
+    The drop test holds the joints at rest this way: position servos (pybullet's
+    velocity-level motors above all) give way a little under the object's weight, and
+    an office chair then creeps on its casters; what is tested is whether the object
+    as a whole stands.
+    """
+    tree = ET.parse(urdf)
+    for j in tree.getroot().iter("joint"):
+        if j.get("type") in ("revolute", "prismatic", "continuous"):
+            j.set("type", "fixed")
+    tree.write(out)
+    return Path(out)
+
+
 def _corners(lo, hi) -> np.ndarray:
     return np.array([[x, y, z] for x in (lo[0], hi[0]) for y in (lo[1], hi[1]) for z in (lo[2], hi[2])])
 
@@ -181,13 +261,118 @@ def _import_pybullet():
     return pybullet
 
 
-def _pybullet(urdf: Path, joints: list[_Joint], opts: SimOptions):
+def _pybullet(urdf: Path, joints: list[_Joint], opts: SimOptions, fixed_base: bool = False):
     pb = _import_pybullet()
-    cid = pb.connect(pb.DIRECT)
-    try:
-        return _pybullet_run(pb, cid, urdf, joints, opts)
-    finally:
-        pb.disconnect(cid)
+    with tempfile.TemporaryDirectory(prefix="artipg-pb-") as tmp:
+        path, inflation = pybullet_urdf(urdf, tmp)
+        cid = pb.connect(pb.DIRECT)
+        try:
+            return _pybullet_run(pb, cid, path, joints, opts, inflation, fixed_base)
+        finally:
+            pb.disconnect(cid)
+
+
+def _mesh_path(urdf: Path, filename: str) -> Path:
+    """A URDF mesh reference (relative, ``package://pkg/...`` or ``file://...``) as a path."""
+    f = re.sub(r"^package://[^/]*/", "", filename)
+    f = f[len("file://"):] if f.startswith("file://") else f
+    return (urdf.parent / f).resolve()
+
+
+def _mesh_vertices(path: Path) -> np.ndarray:
+    """All vertices (V, 3) of a mesh file: what pybullet takes the convex hull of."""
+    if path.suffix.lower() == ".obj":
+        rows = [ln.split()[1:4] for ln in path.read_text().splitlines() if ln.startswith("v ")]
+        return np.array(rows, dtype=float).reshape(-1, 3)
+    import trimesh
+
+    return np.asarray(trimesh.load(str(path), force="mesh").vertices, dtype=float)
+
+
+def eroded_hull(vertices: np.ndarray, depth: float) -> tuple[np.ndarray, np.ndarray, float]:
+    """The convex hull of ``vertices`` (V, 3) with every face moved inwards by up to
+    ``depth`` (metres).
+
+    The erosion stops 0.05 mm short of the radius of the largest ball about the
+    vertex centroid inside the hull, so that a piece thinner than ``2 * depth`` keeps
+    a sliver of volume (and pybullet pads it by more than it was eroded).
+
+    Returns
+    -------
+    vertices : ndarray (V', 3)
+    faces : ndarray (F, 3)
+    eroded : float
+        How far the faces moved, metres (``depth`` unless the piece is thinner than
+        twice that).
+    """
+    from scipy.spatial import ConvexHull, HalfspaceIntersection
+
+    hull = ConvexHull(vertices)
+    eq = hull.equations  # (F, 4): n . x + d <= 0 inside
+    c = vertices[hull.vertices].mean(axis=0)
+    inner = float(-(eq[:, :3] @ c + eq[:, 3]).max())
+    e = float(min(depth, max(inner - 5e-5, 0.0)))
+    if e <= 0.0:
+        return vertices, hull.simplices, 0.0
+    hs = eq.copy()
+    hs[:, 3] += e
+    pts = HalfspaceIntersection(hs, c).intersections
+    return pts, ConvexHull(pts).simplices, e
+
+
+def pybullet_urdf(urdf: Path, tmp: str, margin: float = PYBULLET_MESH_MARGIN) -> tuple[Path, dict]:
+    """A copy of ``urdf`` whose collision meshes pybullet sees as exported.
+
+    pybullet replaces every collision mesh by the convex hull of its vertices, padded
+    by a fixed collision margin (:data:`PYBULLET_MESH_MARGIN`; its boxes, spheres and,
+    with ``URDF_USE_IMPLICIT_CYLINDER``, cylinders keep their size). The copy holds
+    each mesh's hull eroded by that margin (:func:`eroded_hull`, written to ``tmp``),
+    so that the padded hull is the hull itself, with rounded edges, as MuJoCo sees it.
+
+    Returns
+    -------
+    path : Path
+        The copy (in ``tmp``).
+    inflation : dict
+        {link name: metres} how much larger than its hulls a link's meshes still are
+        in pybullet (pieces thinner than twice the margin cannot be eroded fully).
+    """
+    from artipg.export.meshes import obj_text
+
+    urdf = Path(urdf).resolve()
+    Path(tmp).mkdir(parents=True, exist_ok=True)
+    tree = ET.parse(urdf)
+    inflation = {}
+    done: dict = {}  # (file, scale) -> (eroded file or None, erosion): sectors share one hull
+    for link in tree.getroot().iter("link"):
+        worst = 0.0
+        for col in link.findall("collision"):
+            for m in col.iter("mesh"):
+                src = _mesh_path(urdf, m.get("filename", ""))
+                key = (str(src), m.get("scale", "1 1 1"))
+                if key not in done:
+                    try:
+                        V = _mesh_vertices(src) * np.array([float(x) for x in key[1].split()])
+                        V, F, e = eroded_hull(V, margin)
+                        dst = Path(tmp) / f"c{len(done)}.obj"
+                        dst.write_text(obj_text(V, F))
+                        done[key] = (dst, e)
+                    except Exception:  # unreadable or flat: leave it to pybullet as it is
+                        done[key] = (None, 0.0)
+                dst, e = done[key]
+                if dst is None:
+                    m.set("filename", str(src))
+                else:
+                    m.set("filename", str(dst))
+                    m.attrib.pop("scale", None)
+                worst = max(worst, margin - e)
+        inflation[link.get("name")] = worst
+    for m in tree.getroot().iter("mesh"):  # visual meshes: absolute paths
+        if not Path(m.get("filename", "")).is_absolute():
+            m.set("filename", str(_mesh_path(urdf, m.get("filename", ""))))
+    out = Path(tmp) / urdf.name
+    tree.write(out)
+    return out, inflation
 
 
 def _pb_pose(pb, cid, body) -> np.ndarray:
@@ -198,13 +383,32 @@ def _pb_pose(pb, cid, body) -> np.ndarray:
     return T
 
 
-def _pybullet_run(pb, cid, urdf, joints, opts):
+#: Time step of the pybullet simulations, seconds.
+PYBULLET_STEP = 1.0 / 240.0
+
+
+def pybullet_configure(pb, cid) -> tuple[int, int]:
+    """Apply the check's engine settings to pybullet client ``cid``.
+
+    Returns
+    -------
+    shapes : int
+        ``loadURDF`` flags for the collision shapes (exact cylinders).
+    flags : int
+        ``shapes`` plus self-collision, parent-child pairs included.
+    """
+    shapes = pb.URDF_USE_IMPLICIT_CYLINDER  # exact cylinders, not 32-gon hulls padded by the margin
+    flags = pb.URDF_USE_SELF_COLLISION | pb.URDF_USE_SELF_COLLISION_INCLUDE_PARENT | shapes
+    pb.setTimeStep(PYBULLET_STEP, physicsClientId=cid)
+    pb.setPhysicsEngineParameter(contactSlop=CONTACT_SLOP, contactBreakingThreshold=CONTACT_BREAKING,
+                                 globalCFM=GLOBAL_CFM, physicsClientId=cid)
+    return shapes, flags
+
+
+def _pybullet_run(pb, cid, urdf, joints, opts, inflation, fixed_base=False):
     issues, info = [], {}
-    flags = pb.URDF_USE_SELF_COLLISION | pb.URDF_USE_SELF_COLLISION_INCLUDE_PARENT
-    dt = 1.0 / 240.0
-    pb.setTimeStep(dt, physicsClientId=cid)
-    # leave the margin overlap of touching meshes alone instead of pushing them apart
-    pb.setPhysicsEngineParameter(contactSlop=2 * PYBULLET_MESH_MARGIN + 5e-4, physicsClientId=cid)
+    shapes, flags = pybullet_configure(pb, cid)
+    dt = PYBULLET_STEP
     body = pb.loadURDF(str(urdf), useFixedBase=True, flags=flags, physicsClientId=cid)
     n = pb.getNumJoints(body, physicsClientId=cid)
     index = {pb.getJointInfo(body, i, physicsClientId=cid)[1].decode(): i for i in range(n)}
@@ -217,9 +421,9 @@ def _pybullet_run(pb, cid, urdf, joints, opts):
             cps = pb.getClosestPoints(body, body, 0.0, linkIndexA=a, linkIndexB=b, physicsClientId=cid)
             if not cps:
                 continue
-            d = min(c[8] for c in cps)
+            d = min(c[8] for c in cps) + inflation.get(names[a], 0.0) + inflation.get(names[b], 0.0)
             worst = max(worst, -d)
-            if d < -(opts.contact_tol + 2 * PYBULLET_MESH_MARGIN):
+            if d < -opts.contact_tol:
                 issues.append(Issue("simulator", "sim_rest_penetration", -d, [names[a], names[b]],
                                     detail="pybullet: collision geometry penetrates at rest"))
     info["rest_penetration"] = worst
@@ -228,39 +432,44 @@ def _pybullet_run(pb, cid, urdf, joints, opts):
     # frictionless, no gravity (only geometry may stop a joint); fresh body per run
     pb.setGravity(0, 0, 0, physicsClientId=cid)
 
-    def run(sel):
+    live = [j for j in joints if j.name in index]
+
+    def run(sel, others_open=False):
         b = pb.loadURDF(str(urdf), useFixedBase=True, flags=flags, physicsClientId=cid)
         for i in range(-1, n):
             pb.changeDynamics(b, i, lateralFriction=0.0, spinningFriction=0.0, rollingFriction=0.0,
                               physicsClientId=cid)
-        live = [j for j in joints if j.name in index]
         ids = [index[j.name] for j in live]
         state = lambda j: pb.getJointState(b, index[j.name], physicsClientId=cid)[0]  # noqa: E731
+        base = _others(live, sel, others_open)
 
-        def drive(goal):
+        def drive(goal, watch):
+            goal = {**base, **goal}
             pb.setJointMotorControlArray(b, ids, pb.POSITION_CONTROL,
-                                         targetPositions=[goal.get(j.name, 0.0) for j in live],
+                                         targetPositions=[goal[j.name] for j in live],
                                          forces=[200.0] * len(ids), physicsClientId=cid)
             return _run_until(lambda: pb.stepSimulation(physicsClientId=cid), dt, opts,
-                              [(j, goal[j.name]) for j in sel], state)
+                              [(j, goal[j.name]) for j in watch], state)
 
-        up = drive({j.name: j.targets()[1] for j in sel})
-        down = drive({j.name: j.targets()[0] for j in sel})
+        if others_open:  # open the others first (a rack behind its door)
+            drive({}, [j for j in live if j.name in base and base[j.name] != 0.0])
+        up = drive({j.name: j.targets()[1] for j in sel}, sel)
+        down = drive({j.name: j.targets()[0] for j in sel}, sel)
         pb.removeBody(b, physicsClientId=cid)
         return up + down
 
-    for j, target, reached in _blocked(run, [j for j in joints if j.name in index], opts):
+    for j, target, reached in _blocked(run, live, opts):
         issues.append(Issue("simulator", "joint_blocked", abs(reached - target), joint=j.name, q=reached,
                             detail=f"pybullet: target {target:.4g} not reached"))
+    if fixed_base:
+        info["drop"] = "fixed base"
+        return issues, info
     pb.setGravity(0, 0, -9.81, physicsClientId=cid)
-    # drop on a floor, joints held at rest (the joints' own contacts were checked above)
+    # drop on a floor, joints held rigidly at rest (their own contacts were checked above)
     plane = pb.createCollisionShape(pb.GEOM_PLANE, physicsClientId=cid)
     pb.createMultiBody(0, plane, physicsClientId=cid)
-    body = pb.loadURDF(str(urdf), useFixedBase=False, physicsClientId=cid)
-    mov = [index[j.name] for j in joints if j.name in index]
-    if mov:
-        pb.setJointMotorControlArray(body, mov, pb.POSITION_CONTROL, targetPositions=[0.0] * len(mov),
-                                     forces=[200.0] * len(mov), physicsClientId=cid)
+    rigid = rigid_urdf(urdf, Path(urdf).with_name("rigid.urdf"))
+    body = pb.loadURDF(str(rigid), useFixedBase=False, flags=shapes, physicsClientId=cid)
     lo, hi = pb.getAABB(body, -1, physicsClientId=cid)
     corners = _corners(lo, hi)
     for _ in range(int(round(opts.settle_seconds / dt))):
@@ -304,20 +513,41 @@ def _run_until(step, dt, opts, targets, state):
     return [(j, t, float(state(j))) for j, t in targets]
 
 
+def _others(live, sel, others_open: bool) -> dict:
+    """Targets of the joints not driven: rest, or their upper targets (``others_open``)."""
+    names = {j.name for j in sel}
+    return {j.name: (j.targets()[1] if others_open and j.name not in names else 0.0) for j in live}
+
+
 def _blocked(run, joints, opts):
-    """Joints that miss a target when all are driven together and again when driven
-    alone (the others held at rest): [(joint, target, reached)]."""
+    """Joints that miss a target when all are driven together, again when driven alone
+    with the others held at rest, and again when driven alone after the others have
+    been opened (a dishwasher rack cannot come out past its closed door, nor a drawer
+    behind a cabinet door): [(joint, target, reached)] of the run with the others at
+    rest. ``run(sel, others_open)`` returns [(joint, target, reached)] for ``sel``."""
     if not joints:
         return []
-    failed = {j.name for j, t, q in run(joints) if abs(q - t) > j.tol(opts.joint_tol)}
+
+    def misses(res):
+        return [(j, t, q) for j, t, q in res if abs(q - t) > j.tol(opts.joint_tol)]
+
+    failed = {j.name for j, t, q in misses(run(joints, False))}
     out = []
     for j in joints:
-        if j.name in failed:
-            out += [(jj, t, q) for jj, t, q in run([j]) if abs(q - t) > jj.tol(opts.joint_tol)]
+        if j.name not in failed:
+            continue
+        miss = misses(run([j], False))
+        if miss and len(joints) > 1 and not misses(run([j], True)):
+            continue
+        out += miss
     return out
 
 
 # ------------------------------------------------------------------ MuJoCo
+
+#: Least translational mobility estimate (times 1 / mass) MuJoCo may use to soften the
+#: contacts of a jointed body (see :func:`_mj_model`).
+INVWEIGHT_FLOOR = 0.1
 
 _MJ_COMPILER = {"discardvisual": "true", "fusestatic": "false", "strippath": "false", "balanceinertia": "true"}
 
@@ -327,9 +557,7 @@ def _mujoco_urdf(urdf: Path, tmp: str) -> Path:
     tree = ET.parse(urdf)
     root = tree.getroot()
     for m in root.iter("mesh"):
-        f = re.sub(r"^package://[^/]*/", "", m.get("filename", ""))
-        f = f[len("file://"):] if f.startswith("file://") else f
-        m.set("filename", str((urdf.parent / f).resolve()))
+        m.set("filename", str(_mesh_path(urdf, m.get("filename", ""))))
     for el in list(root.findall("mujoco")):
         root.remove(el)
     mj = ET.SubElement(root, "mujoco")
@@ -339,12 +567,12 @@ def _mujoco_urdf(urdf: Path, tmp: str) -> Path:
     return out
 
 
-def _mujoco(urdf: Path, joints: list[_Joint], opts: SimOptions):
+def _mujoco(urdf: Path, joints: list[_Joint], opts: SimOptions, fixed_base: bool = False):
     import mujoco
 
     with tempfile.TemporaryDirectory(prefix="artipg-mj-") as tmp:
         path = _mujoco_urdf(urdf, tmp)
-        return _mujoco_run(mujoco, path, joints, opts)
+        return _mujoco_run(mujoco, path, joints, opts, fixed_base)
 
 
 def _mj_model(mujoco, path, joints, free: bool, parent_contacts: bool = True):
@@ -362,6 +590,14 @@ def _mj_model(mujoco, path, joints, free: bool, parent_contacts: bool = True):
             a.trntype = mujoco.mjtTrn.mjTRN_JOINT
             a.set_to_position(kp=1.0, kv=0.1)  # gains are set per joint below
     m = spec.compile()
+    # MuJoCo softens a contact in proportion to an estimate of how easily its bodies
+    # translate (body_invweight0); a body that can only turn about an axis through its
+    # centre of mass (a knob, a cap, a turntable) gets none, so a contact pressing it
+    # along its axis is an infinitely stiff row of zero effective mass, whose unbounded
+    # force leaks into the joint as round-off torque and spins it. Floor the estimate.
+    jointed = (m.body_jntnum > 0) & (m.body_mass > 0)
+    m.body_invweight0[jointed, 0] = np.maximum(m.body_invweight0[jointed, 0],
+                                               INVWEIGHT_FLOOR / m.body_mass[jointed])
     if parent_contacts:
         m.opt.disableflags |= int(mujoco.mjtDisableBit.mjDSBL_FILTERPARENT)
     d = mujoco.MjData(m)
@@ -380,7 +616,7 @@ def _mj_model(mujoco, path, joints, free: bool, parent_contacts: bool = True):
     return m, d
 
 
-def _mujoco_run(mujoco, path, joints, opts):
+def _mujoco_run(mujoco, path, joints, opts, fixed_base=False):
     issues, info = [], {}
     m, d = _mj_model(mujoco, path, joints, free=False)
     body = lambda i: mujoco.mj_id2name(m, mujoco.mjtObj.mjOBJ_BODY, int(i)) or str(i)  # noqa: E731
@@ -405,9 +641,15 @@ def _mujoco_run(mujoco, path, joints, opts):
     live = [j for j in joints if j.name in act]
     state = lambda j: d.qpos[qadr[j.name]]  # noqa: E731
 
-    def run(sel):
+    def run(sel, others_open=False):
         mujoco.mj_resetData(m, d)
+        base = _others(live, sel, others_open)
         d.ctrl[:] = 0.0
+        for j in live:
+            d.ctrl[act[j.name]] = base[j.name]
+        if others_open:  # open the others first (a rack behind its door)
+            _run_until(lambda: mujoco.mj_step(m, d), m.opt.timestep, opts,
+                       [(j, base[j.name]) for j in live if base[j.name] != 0.0], state)
         out = []
         for phase in (1, 0):  # to the upper targets, then back to the lower ones
             for j in sel:
@@ -419,9 +661,12 @@ def _mujoco_run(mujoco, path, joints, opts):
     for j, target, reached in _blocked(run, live, opts):
         issues.append(Issue("simulator", "joint_blocked", abs(reached - target), joint=j.name, q=reached,
                             detail=f"mujoco: target {target:.4g} not reached"))
-    # drop on a floor with a free root, joints held at rest
-    m, d = _mj_model(mujoco, path, joints, free=True, parent_contacts=False)
-    d.ctrl[:] = 0.0
+    if fixed_base:
+        info["drop"] = "fixed base"
+        return issues, info
+    # drop on a floor with a free root, joints held rigidly at rest
+    m, d = _mj_model(mujoco, rigid_urdf(path, Path(path).with_name("rigid.urdf")), [], free=True,
+                     parent_contacts=False)
     root = 1
     for _ in range(int(round(opts.settle_seconds / m.opt.timestep))):
         mujoco.mj_step(m, d)
