@@ -15,10 +15,12 @@ import numpy as np
 import pytest
 
 import artipg
-from artipg.geometry import cuboid, sphere
+from artipg.geometry import cuboid, frustum, prism, ring, sphere, torus, tri_prism
 from artipg.geometry.transforms import rotation, translation
 from artipg.validate import check_object
-from artipg.validate.contacts import box_box, close_pairs, evaluate, overlapping, refine_distance, world_boxes
+from artipg.validate.checks import run_checks
+from artipg.validate.contacts import (box_box, box_distance, close_pairs, evaluate, overlapping, pair_distance,
+                                      refine_distance, world_boxes)
 from artipg.validate.kinematics import Kinematics
 from artipg.validate.rowsdf import PREPARE, ROW_SDF
 from artipg.validate.shapes import Pieces
@@ -179,6 +181,120 @@ def test_refine_bounds_the_distance_of_a_ball_over_a_box_better_than_the_samples
         assert gap - 1e-9 <= d <= sampled
         if sampled > gap + 1e-6:  # the samples miss the closest points: refining gets closer
             assert d < sampled - 1e-7
+
+
+def _hand_pieces(prims, links, seed=0x5A3B1E):
+    """Pieces of primitives ``prims`` (one part each, on links ``links``), piece frames
+    equal to their link frames."""
+    params = np.zeros((len(prims), max(len(p.params) for p in prims)))
+    for i, p in enumerate(prims):
+        params[i, :len(p.params)] = p.params
+    b = np.stack([p.geom.bounds_batch(np.array([p.params], dtype=float))[0] for p in prims])
+    return Pieces(links, np.arange(len(prims)), np.tile(np.eye(4), (len(prims), 1, 1)), (b[:, 0] + b[:, 1]) / 2,
+                  (b[:, 1] - b[:, 0]) / 2, [p.geom for p in prims], params, [f"p{i}" for i in range(len(prims))],
+                  links, np.random.default_rng(seed))
+
+
+def test_overlapping_round_parts_penetrate_whatever_was_computed_before():
+    """Two knob balls 4 mm into each other, and a knob post 3 mm into a ball: the
+    depths are the same alone, repeated, after the full checks ran on the same pieces
+    and after other pieces were sampled first (the sample stream once leaked between
+    calls, and a 5 mm knob overlap passed)."""
+    prims = [sphere(0.017), sphere(0.019), frustum(0.008, 0.008, 0.03), cuboid(0.3, 0.3, 0.01)]
+    L = len(prims)
+    kin = Kinematics([f"l{i}" for i in range(L)], np.array([-1] + [0] * (L - 1)), [""] + ["j"] * (L - 1),
+                     ["fixed"] * L, np.tile(np.eye(4), (L, 1, 1)), np.zeros((L, 3)), np.zeros((L, 2)))
+    kin.origin[1] = translation(0.032, 0.0, 0.0)  # ball 1: 0.017 + 0.019 - 0.004 from ball 0
+    kin.origin[2] = translation(0.0, 0.0, -0.017 - 0.015 + 0.003)  # post: its top 3 mm into ball 0
+    kin.origin[3] = translation(0.0, 0.3, 0.0)  # a plate far away
+    W = kin.poses()
+    a, b = np.array([0, 0, 2, 3]), np.array([1, 2, 3, 1])
+
+    def depths(pieces):
+        return pair_distance(pieces, a, b, W[a], W[b], 2e-3)
+
+    fresh = depths(_hand_pieces(prims, np.arange(L)))
+    assert fresh[0] == pytest.approx(-0.004, abs=1e-12)  # balls: exact
+    assert fresh[1] < -1e-3  # the post's end face, sampled
+    pieces = _hand_pieces(prims, np.arange(L))
+    first = depths(pieces)
+    assert np.array_equal(first, fresh) and np.array_equal(depths(pieces), fresh)
+    r = run_checks(kin, pieces)
+    assert np.array_equal(depths(pieces), fresh)
+    pen = r["penetration"]
+    assert not pen.ok
+    assert {tuple(sorted(i.parts)) for i in pen.issues} == {("p0", "p1"), ("p0", "p2")}
+    assert max(i.amount for i in pen.issues) == pytest.approx(0.004, abs=1e-12)
+    other = _hand_pieces(prims, np.arange(L))
+    other.require(np.array([3, 1]))  # other pieces first
+    assert np.array_equal(depths(other), fresh)
+    for i in range(L):
+        assert np.array_equal(other.samples(i), pieces.samples(i))
+
+
+def _obb_gap(pieces, a, b, Wa, Wb):
+    """Signed separation (K,) of the posed local bounding boxes of pieces ``a`` and
+    ``b`` (exact distance when apart): a lower bound of the distance of the pieces."""
+    Ta, Tb = Wa.copy(), Wb.copy()
+    Ta[:, :3, 3] += np.einsum("kij,kj->ki", Wa[:, :3, :3], pieces.center[a])
+    Tb[:, :3, 3] += np.einsum("kij,kj->ki", Wb[:, :3, :3], pieces.center[b])
+    return box_box(pieces.half[a], pieces.half[b], Ta, Tb, np.full(len(a), np.inf))
+
+
+def test_refinement_never_brings_distant_pieces_into_contact():
+    """Pieces whose bounding boxes are centimetres apart stay centimetres apart after
+    refinement: a projection step that lands off the source surface (a prism's edge,
+    a dome's rim) once gave ~0 for a prism 3 cm from a dome."""
+    rng = np.random.default_rng(17)
+    shapes = [tri_prism(0.13, 0.065, 0.0, 0.014), sphere(0.22, 0.185, 0.22), prism(0.03, 0.05, 6),
+              ring(0.05, 0.04, 0.02, 4.0), torus(0.04, 0.008, 3.0), frustum(0.02, 0.035, 0.04), sphere(0.03, -0.01)]
+    K = 400
+    ia, ib = rng.integers(0, len(shapes), K), rng.integers(0, len(shapes), K)
+    prims = [shapes[i] for i in ia] + [shapes[i] for i in ib]
+    pieces = _hand_pieces(prims, np.arange(2 * K))
+    a, b = np.arange(K), np.arange(K, 2 * K)
+    Wa = np.array([rotation(rng.normal(size=3), rng.uniform(0, np.pi)) for _ in range(K)])
+    Wb = np.array([rotation(rng.normal(size=3), rng.uniform(0, np.pi)) for _ in range(K)])
+    # b slid away from a along a random direction until their boxes are 5-30 mm apart
+    # (bisection: the gap is a convex function of the offset)
+    u = rng.normal(size=(K, 3))
+    u /= np.linalg.norm(u, axis=1, keepdims=True)
+    target = rng.uniform(0.005, 0.03, K)
+    lo, hi = np.zeros(K), np.ones(K)
+    for _ in range(40):
+        mid = 0.5 * (lo + hi)
+        Wb[:, :3, 3] = mid[:, None] * u
+        far = _obb_gap(pieces, a, b, Wa, Wb) > target
+        hi, lo = np.where(far, mid, hi), np.where(far, lo, mid)
+    Wb[:, :3, 3] = hi[:, None] * u
+    gap = _obb_gap(pieces, a, b, Wa, Wb)
+    assert (gap >= 0.005 - 1e-9).all()
+    sampled = pair_distance(pieces, a, b, Wa, Wb, np.inf)
+    d = refine_distance(pieces, a, b, Wa, Wb)
+    # an upper bound no worse than the samples; never "touching" (within the 2 mm of
+    # the floating check) for pieces at least 5 mm apart
+    assert (d <= sampled + 1e-12).all()
+    assert (d > 2e-3).all(), np.sort(d)[:5]
+    d3 = refine_distance(pieces, a, b, Wa, Wb, iters=3, stop_below=2e-3)  # as the checks call it
+    assert (d3 > 2e-3).all()
+
+
+@pytest.mark.parametrize("category", CATEGORIES)
+def test_refined_rest_distances_respect_the_bounding_boxes(category):
+    """On real objects, pieces whose oriented bounding boxes are 5 mm or more apart
+    are never within the floating tolerance (2 mm) after refinement."""
+    for seed in SEEDS:
+        kin, pieces = _pieces(artipg.generate(category, seed))
+        W = kin.poses()[pieces.link] @ pieces.T
+        c, h = world_boxes(pieces, W)
+        a, b = close_pairs(c, h, 0.02)
+        keep = ~(pieces.is_box[a] & pieces.is_box[b]) & (pieces.part[a] != pieces.part[b])
+        a, b = a[keep], b[keep]
+        if not len(a):
+            continue
+        far = _obb_gap(pieces, a, b, W[a], W[b]) >= 0.005
+        d = refine_distance(pieces, a, b, W[a], W[b], iters=3, stop_below=2e-3)
+        assert (d[far] > 2e-3).all(), (category, seed)
 
 
 # ---------------------------------------------------------------- broken objects

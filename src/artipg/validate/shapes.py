@@ -55,7 +55,7 @@ class Pieces:
     part_link : (P,) int64
         Link index of every part.
     rng : numpy.random.Generator
-        Stream of the surface samples.
+        Seeds the surface-sample streams (one number is drawn from it here).
     meshes : dict, optional
         Piece index -> ``trimesh.Trimesh`` (piece frame) for mesh pieces.
     """
