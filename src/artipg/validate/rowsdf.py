@@ -197,30 +197,5 @@ PREPARE = {Cuboid: prepare_cuboid, Frustum: prepare_frustum, Ring: prepare_ring,
            Torus: prepare_torus, Prism: prepare_prism, TriPrism: prepare_tri_prism}
 
 
-def frustum_rows(P, x):
-    return prepare_frustum(P)(x)
-
-
-def ring_rows(P, x):
-    return prepare_ring(P)(x)
-
-
-def sphere_rows(P, x):
-    return prepare_sphere(P)(x)
-
-
-def torus_rows(P, x):
-    return prepare_torus(P)(x)
-
-
-def prism_rows(P, x):
-    return prepare_prism(P)(x)
-
-
-def tri_prism_rows(P, x):
-    return prepare_tri_prism(P)(x)
-
-
 #: Geometry template -> row-wise signed distance ``f(P (K, p), x (K, 3)) -> (K,)``.
-ROW_SDF = {Cuboid: cuboid_rows, Frustum: frustum_rows, Ring: ring_rows, Sphere: sphere_rows, Torus: torus_rows,
-           Prism: prism_rows, TriPrism: tri_prism_rows}
+ROW_SDF = {geom: (lambda P, x, prepare=prepare: prepare(P)(x)) for geom, prepare in PREPARE.items()}
