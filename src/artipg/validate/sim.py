@@ -458,9 +458,7 @@ def _pybullet_run(pb, cid, urdf, joints, opts, inflation, fixed_base=False):
         pb.removeBody(b, physicsClientId=cid)
         return up + down
 
-    for j, target, reached in _blocked(run, live, opts):
-        issues.append(Issue("simulator", "joint_blocked", abs(reached - target), joint=j.name, q=reached,
-                            detail=f"pybullet: target {target:.4g} not reached"))
+    issues += _blocked_issues(run, live, opts, "pybullet")
     if fixed_base:
         info["drop"] = "fixed base"
         return issues, info
@@ -517,6 +515,13 @@ def _others(live, sel, others_open: bool) -> dict:
     """Targets of the joints not driven: rest, or their upper targets (``others_open``)."""
     names = {j.name for j in sel}
     return {j.name: (j.targets()[1] if others_open and j.name not in names else 0.0) for j in live}
+
+
+def _blocked_issues(run, joints, opts, engine: str) -> list[Issue]:
+    """One ``joint_blocked`` issue per joint :func:`_blocked` finds in ``engine``."""
+    return [Issue("simulator", "joint_blocked", abs(reached - target), joint=j.name, q=reached,
+                  detail=f"{engine}: target {target:.4g} not reached")
+            for j, target, reached in _blocked(run, joints, opts)]
 
 
 def _blocked(run, joints, opts):
@@ -658,9 +663,7 @@ def _mujoco_run(mujoco, path, joints, opts, fixed_base=False):
                               [(j, j.targets()[phase]) for j in sel], state)
         return out
 
-    for j, target, reached in _blocked(run, live, opts):
-        issues.append(Issue("simulator", "joint_blocked", abs(reached - target), joint=j.name, q=reached,
-                            detail=f"mujoco: target {target:.4g} not reached"))
+    issues += _blocked_issues(run, live, opts, "mujoco")
     if fixed_base:
         info["drop"] = "fixed base"
         return issues, info
