@@ -93,5 +93,7 @@ def bail(ctx):
 RULE = Category(
     name="bucket",
     subcategories={"cylindrical_bucket": 3.0, "tapered_bucket": 3.0, "prism_bucket": 1.5, "paint_pail": 1.0},
+    materials={"body": "plastic"},
+    mass_range=(0.2, 4.0),  # kg: plastic pails to steel paint buckets with lids
     slots=(Slot("body", body), Slot("lid", lid, after=("body",)), Slot("bail", bail, after=("body", "lid"))),
 )

@@ -232,5 +232,6 @@ def back(ctx):
 RULE = Category(
     name="chair",
     subcategories={"office": 6.0, "four_leg": 1.5, "folding": 1.5, "bar_stool": 1.0},
+    mass_range=(2.0, 25.0),  # kg: folding chairs to office chairs with a five-star base
     slots=(Slot("frame", frame), Slot("back", back, after=("frame",))),
 )

@@ -144,6 +144,7 @@ RULE = Category(
     name="door",
     subcategories={"single_door": 3.0, "double_door": 1.5, "french_door": 1.0, "barn_door": 1.0},
     fixed_base=True,  # set in a wall opening: simulated mounted, not dropped on a floor
+    mass_range=(10.0, 150.0),  # kg: frame + leaves: hollow-core interior doors to glazed double doors
     slots=(Slot("frame", frame), Slot("leaves", leaves, after=("frame",)),
            Slot("hardware", hardware, after=("leaves",))),
 )

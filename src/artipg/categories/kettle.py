@@ -160,6 +160,8 @@ def _button(p, builder, root, pose, radius):
 RULE = Category(
     name="kettle",
     subcategories={"electric": 3.0, "stovetop": 2.0, "gooseneck": 1.5},
+    materials={"body": "plastic", "base": "plastic"},
+    mass_range=(0.3, 3.0),  # kg: plastic electric kettles with base to stovetop kettles
     slots=(Slot("body", body), Slot("handle", handle, after=("body",)), Slot("lid", lid, after=("handle",)),
            Slot("spout", spout, after=("body",)), Slot("controls", controls, after=("handle",))),
 )

@@ -75,5 +75,7 @@ def handles(ctx):
 RULE = Category(
     name="kitchen_pot",
     subcategories={"stockpot": 2.0, "saucepan": 3.0, "saute_pan": 1.5, "dutch_oven": 1.5},
+    materials={"body": "aluminium", "lid": "glass"},
+    mass_range=(0.3, 6.0),  # kg: aluminium saucepans to cast-iron-heavy stockpots with lid
     slots=(Slot("body", body), Slot("handles", handles, after=("body",))),
 )

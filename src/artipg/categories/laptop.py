@@ -92,5 +92,7 @@ def screen(ctx):
 RULE = Category(
     name="laptop",
     subcategories={"mainstream": 3.0, "ultrabook": 2.0, "business": 1.5, "gaming": 1.0},
+    materials={"base": "aluminium", "screen": "plastic"},
+    mass_range=(0.7, 4.5),  # kg: ultrabooks (~1 kg) to gaming laptops (~3 kg)
     slots=(Slot("base", base), Slot("screen", screen, after=("base",))),
 )

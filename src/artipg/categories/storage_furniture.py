@@ -153,5 +153,6 @@ def fronts(ctx):
 RULE = Category(
     name="storage_furniture",
     subcategories={"cabinet": 3.0, "dresser": 2.0, "wardrobe": 1.0, "sideboard": 1.0, "nightstand": 1.0},
+    mass_range=(5.0, 200.0),  # kg: nightstands to wardrobes
     slots=(Slot("support", support), Slot("body", body, after=("support",)), Slot("fronts", fronts, after=("body",))),
 )

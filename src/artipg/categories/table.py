@@ -162,5 +162,6 @@ def base(ctx):
 RULE = Category(
     name="table",
     subcategories={"dining": 3.0, "coffee": 2.0, "desk": 2.0, "side": 1.5},
+    mass_range=(3.0, 120.0),  # kg: side tables to solid dining tables
     slots=(Slot("top", top), Slot("base", base, after=("top",))),
 )

@@ -167,5 +167,6 @@ RULE = Category(
     name="window",
     subcategories={"casement": 3.0, "sliding": 2.0, "double_hung": 2.0, "awning": 1.0},
     fixed_base=True,  # set in a wall opening: simulated mounted, not dropped on a floor
+    mass_range=(5.0, 150.0),  # kg: frame + sashes + glazing of one opening
     slots=(Slot("frame", frame), Slot("sashes", sashes, after=("frame",))),
 )

@@ -10,7 +10,7 @@ boxes, so that simulators, which treat every collision mesh as its convex hull,
 never fill a hollow body.
 
 Inertials come from the solid geometry and a density per material class
-(:data:`MATERIAL`, :data:`CLASS_DENSITY`): exact formulas for boxes, frames and
+(:mod:`artipg.materials`, with the category's overrides): exact formulas for boxes, frames and
 cylinders, mass properties of the primitive's mesh for the other templates.
 """
 
@@ -21,42 +21,7 @@ import trimesh
 
 from artipg.geometry.box import Cuboid, RectRing
 from artipg.geometry.revolve import Frustum, Sphere
-
-
-#: Densities (kg/m^3) of the material classes.
-CLASS_DENSITY = {
-    "wood": 600.0,       # chipboard / MDF / solid wood furniture panels
-    "plastic": 1050.0,   # ABS, polypropylene housings, knobs, caps
-    "aluminium": 2700.0,  # handles, frames of small appliances
-    "steel": 7850.0,     # hinges, levers, arms, stapler parts
-    "brass": 8500.0,     # faucet spouts and levers
-    "glass": 2500.0,     # panes, lenses, screens
-    "rubber": 1100.0,    # wheels, pedals, pads
-}
-
-#: Material class of each semantic label; labels not listed are :data:`DEFAULT_CLASS`.
-MATERIAL = {
-    "body": "wood", "base": "wood", "leg": "wood", "door": "wood", "drawer": "wood", "shelf": "wood",
-    "top": "wood", "seat": "wood", "backrest": "wood", "armrest": "wood", "frame": "wood", "sash": "wood",
-    "flap": "wood", "panel": "plastic",
-    "handle": "aluminium", "hinge": "steel", "lever": "brass", "spout": "brass", "nozzle": "brass",
-    "arm": "steel", "magazine": "steel",
-    "lid": "plastic", "knob": "plastic", "button": "plastic", "dial": "plastic", "switch": "plastic",
-    "cap": "plastic", "pump": "plastic", "tray": "plastic", "turntable": "glass", "keyboard": "plastic",
-    "touchpad": "plastic", "temple": "plastic",
-    "glass": "glass", "lens": "glass", "screen": "glass",
-    "wheel": "rubber", "pedal": "rubber",
-}
-DEFAULT_CLASS = "plastic"
-
-#: Density (kg/m^3) per semantic label (derived from :data:`MATERIAL`).
-DENSITY = {label: CLASS_DENSITY[c] for label, c in MATERIAL.items()}
-DEFAULT_DENSITY = CLASS_DENSITY[DEFAULT_CLASS]
-
-
-def density(semantic: str) -> float:
-    """Density (kg/m^3) of a part with semantic label ``semantic``."""
-    return CLASS_DENSITY[MATERIAL.get(semantic, DEFAULT_CLASS)]
+from artipg.materials import CLASS_DENSITY, DEFAULT_CLASS, MATERIAL, density, material_class  # noqa: F401
 
 
 def obj_text(vertices: np.ndarray, faces: np.ndarray) -> str:
@@ -138,16 +103,17 @@ def primitive_mass_properties(geom, params, sections: int = 24) -> tuple[float, 
     return vol, np.asarray(props.center_mass), np.asarray(props.inertia) / props.mass
 
 
-def link_inertial(link, sections: int = 24) -> tuple[float, np.ndarray, np.ndarray]:
+def link_inertial(link, sections: int = 24, materials=None) -> tuple[float, np.ndarray, np.ndarray]:
     """Mass (kg), centre of mass (3,) and inertia tensor (3, 3) about it, link frame.
 
-    Each primitive is a solid of its part's material density (:func:`density`);
+    Each primitive is a solid of its part's material density (:func:`density`, with
+    the category's ``materials`` overrides, e.g. ``obj.materials``);
     overlaps are counted twice, which is a small over-estimate for the few
     primitives that intersect.
     """
     masses, coms, inertias = [], [], []
     for part in link.parts:
-        rho = density(part.semantic)
+        rho = density(part.semantic, materials)
         for prim in part.primitives:
             vol, c, I1 = primitive_mass_properties(prim.geom, prim.params, sections)
             if vol <= 0:
@@ -169,3 +135,9 @@ def link_inertial(link, sections: int = 24) -> tuple[float, np.ndarray, np.ndarr
     # keep the tensor physically valid for engines that check the triangle inequality
     I = (I + I.T) / 2 + np.eye(3) * 1e-9
     return M, com, I
+
+
+def object_mass(obj, sections: int = 24) -> float:
+    """Total mass (kg) of ``obj``: the sum of its links' :func:`link_inertial` masses,
+    with the category's material overrides (``obj.materials``)."""
+    return float(sum(link_inertial(link, sections, obj.materials)[0] for link in obj.links))

@@ -55,7 +55,7 @@ def build_urdf(obj, sections: int = 24, visuals: bool = True) -> tuple[ET.Elemen
     inertials = {}
     for link in obj.links:
         el = ET.SubElement(robot, "link", name=link.name)
-        mass, com, I = inertials[link.name] = link_inertial(link, sections)
+        mass, com, I = inertials[link.name] = link_inertial(link, sections, obj.materials)
         inertial = ET.SubElement(el, "inertial")
         ET.SubElement(inertial, "origin", xyz=_fmt(com), rpy="0 0 0")
         ET.SubElement(inertial, "mass", value=f"{mass:.9g}")

@@ -88,6 +88,10 @@ class ArticulatedObject:
         Recorded parameters: name -> :class:`artipg.rules.params.Param`.
     templates : dict
         Slot -> chosen part template name(s).
+    materials : dict
+        Semantic label -> material class overrides of the object's category
+        (:attr:`artipg.rules.Category.materials`); other labels use the defaults of
+        :data:`artipg.materials.MATERIAL`.
     """
 
     category: str
@@ -98,6 +102,7 @@ class ArticulatedObject:
     params: dict = field(default_factory=dict)
     templates: dict = field(default_factory=dict)
     report: dict = field(default_factory=dict)
+    materials: dict = field(default_factory=dict)
 
     # ------------------------------------------------------------ structure
     @cached_property

@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 from graphlib import TopologicalSorter
 from typing import Any, Callable
 
+from artipg.materials import CLASS_DENSITY
 from artipg.model.articulation import ArticulatedObject
 from artipg.model.builder import ObjectBuilder
 from artipg.rules.params import ParamRecorder, option_name
@@ -76,16 +77,33 @@ class Category:
         The object is a fixture, mounted in use (a faucet on a sink, a switch on a
         wall, a door or window in its wall opening): the simulator check holds its
         base fixed instead of dropping it on a floor.
+    materials : dict
+        {semantic label: material class} for parts of this category whose material
+        differs from the default of their label (:data:`artipg.materials.MATERIAL`):
+        a kettle body is plastic, not wood. Classes are the keys of
+        :data:`artipg.materials.CLASS_DENSITY`.
+    mass_range : (float, float)
+        Plausible whole-object mass of real objects of the category, kg (generous:
+        it catches a wrong material or a solid body that should be hollow, not
+        small differences). The tests check every generated object against it.
     """
 
     name: str
     subcategories: dict
     slots: tuple
     fixed_base: bool = False
+    materials: dict = field(default_factory=dict)
+    mass_range: tuple = (0.0, float("inf"))
     order: tuple = field(init=False)
     _keys: tuple = field(init=False, repr=False)
 
     def __post_init__(self):
+        unknown = sorted(set(self.materials.values()) - set(CLASS_DENSITY))
+        if unknown:
+            raise ValueError(f"{self.name}: unknown material classes {unknown}; known: {sorted(CLASS_DENSITY)}")
+        lo, hi = self.mass_range
+        if not 0.0 <= lo < hi:
+            raise ValueError(f"{self.name}: mass_range must satisfy 0 <= low < high, got {self.mass_range}")
         names = {s.name for s in self.slots}
         ts = TopologicalSorter()
         for s in self.slots:
@@ -119,4 +137,6 @@ class Category:
                 ctx = SlotContext(ParamRecorder(st.open(key), record, overrides, slot.name), sub, out,
                                   builder, templates, slot.name)
                 out[slot.name] = slot.build(ctx)
-        return builder.build(self.name, sub, seed, record, templates)
+        obj = builder.build(self.name, sub, seed, record, templates)
+        obj.materials = self.materials
+        return obj
