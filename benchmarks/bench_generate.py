@@ -4,6 +4,8 @@ Prints, per category, the median milliseconds per object for
 (a) ``artipg.generate``, (b) generate + 2048 labelled points, (c) a full export to
 disk (URDF, meshes, semantics, annotation, points), and the objects/second of
 ``artipg generate -n N --workers 2`` end to end (CLI, process pool, disk).
+(b) is split into where its time goes: the patch table of the object (built once per
+object, cached) and the draw of 2048 points from it; the rest is (a).
 
 Usage: python benchmarks/bench_generate.py [--categories a b] [--seeds 200] [--cli-n 500]
 """
@@ -53,8 +55,8 @@ def main() -> None:
     tmp = tempfile.mkdtemp(prefix="artipg-bench-")
     print(f"artipg {artipg.__version__}, {len(cats)} categories, medians over {args.seeds} seeds "
           f"({args.export_seeds} for export), one process, {args.clock} clock")
-    print(f"{'category':<20}{'(a) gen ms':>12}{'(b) +2048 pts ms':>18}{'(c) export ms':>15}"
-          f"{'joints mean/median/max':>26}")
+    print(f"{'category':<20}{'(a) gen ms':>12}{'(b) +2048 pts ms':>18}{'patches':>9}{'draw':>7}"
+          f"{'(c) export ms':>15}{'joints mean/median/max':>26}")
     worst_b = 0.0
     all_dof = []
     for c in cats:
@@ -62,13 +64,16 @@ def main() -> None:
             artipg.generate(c, s).sample_points(2048)
         a = _median_ms(lambda s: artipg.generate(c, s), seeds)
         b = _median_ms(lambda s: artipg.generate(c, s).sample_points(2048), seeds)
+        objs = {s: artipg.generate(c, s) for s in seeds}
+        patches = _median_ms(lambda s: objs[s].primitive_table.families, seeds)
+        draw = _median_ms(lambda s: objs[s].sample_points(2048), seeds)
         e = _median_ms(lambda s: export_object(artipg.generate(c, s), os.path.join(tmp, c, str(s)), overwrite=True),
                        range(args.export_seeds))
         dof = np.array([artipg.generate(c, s).dof for s in seeds])
         all_dof.append(dof)
         worst_b = max(worst_b, b)
         joints = f"{dof.mean():.1f} / {np.median(dof):.0f} / {dof.max()}"
-        print(f"{c:<20}{a:>12.3f}{b:>18.3f}{e:>15.1f}{joints:>26}")
+        print(f"{c:<20}{a:>12.3f}{b:>18.3f}{patches:>9.3f}{draw:>7.3f}{e:>15.1f}{joints:>26}")
     print(f"worst median (b): {worst_b:.3f} ms per object")
     dof = np.concatenate(all_dof)
     print(f"movable joints over all categories: mean {dof.mean():.2f}, median {np.median(dof):.0f}, "

@@ -5,6 +5,9 @@ from __future__ import annotations
 import itertools
 import json
 import math
+import os
+import subprocess
+import sys
 from pathlib import Path
 
 import numpy as np
@@ -74,6 +77,52 @@ def test_chamfer_matrix_equals_pairwise_distances(kind):
     calls = []
     chamfer_matrix(A, B, kind=kind, progress=calls.append)
     assert sum(calls) == len(A) + len(B)
+
+
+@pytest.mark.parametrize("kind", ["l1", "l2"])
+def test_chamfer_matrix_matches_per_pair_distance_on_generated_clouds(kind):
+    """The pykdtree matrices equal per-pair cKDTree ``chamfer_distance`` on real clouds of every category."""
+    A = [clouds_of(c, [0], 256)[0] for c in CATEGORIES]
+    B = [clouds_of(c, [7], 256)[0] for c in CATEGORIES[::-1]]
+    D = chamfer_matrix(A, B, kind=kind, workers=2)
+    np.testing.assert_allclose(D, [[chamfer_distance(a, b, kind) for b in B] for a in A], rtol=1e-12, atol=0)
+    S = chamfer_matrix(A, kind=kind, workers=2)
+    np.testing.assert_allclose(S, [[chamfer_distance(a, b, kind) for b in A] for a in A], rtol=1e-12, atol=0)
+    assert np.all(np.diag(S) == 0) and np.array_equal(S, S.T) and np.all(S + np.eye(len(A)) > 0)
+    # every entry is computed by one thread: the thread count does not change a single bit
+    assert np.array_equal(chamfer_matrix(A, kind=kind, workers=1), S)
+
+
+_THREAD_PROBE = """
+import ctypes, json, os, sys
+from pykdtree import kdtree
+import artipg
+from artipg.metrics import chamfer_matrix
+clouds = [artipg.generate(c, 0).sample_points(512, seed=0).points for c in artipg.categories()]
+tasks = lambda: len(os.listdir("/proc/self/task"))
+base, seen = tasks(), []
+chamfer_matrix(clouds, workers=int(sys.argv[1]), progress=lambda k: seen.append(tasks()))
+print(json.dumps({"extra_threads": max(seen) - base,
+                  "caller_omp_threads": ctypes.CDLL(kdtree.__file__).omp_get_max_threads()}))
+"""
+
+
+@pytest.mark.skipif(not Path("/proc/self/task").is_dir(), reason="counts threads in /proc/self/task (Linux)")
+@pytest.mark.parametrize("workers", [1, 2])
+def test_chamfer_matrix_runs_exactly_workers_threads(workers):
+    """``workers`` threads in all, even where OpenMP would start 4 per query (OMP_NUM_THREADS=4).
+
+    OpenMP keeps the threads of a team alive after a parallel region, so any extra
+    OpenMP thread started by a query would still be counted at the next progress call
+    (without the per-thread limit this counts 4 threads per worker). One fresh process
+    per run: a joined thread can linger in /proc for a moment.
+    """
+    env = dict(os.environ, OMP_NUM_THREADS="4")
+    run = subprocess.run([sys.executable, "-c", _THREAD_PROBE, str(workers)], env=env, capture_output=True,
+                         text=True, check=True)
+    out = json.loads(run.stdout.strip().splitlines()[-1])
+    assert out["extra_threads"] == workers
+    assert out["caller_omp_threads"] == 4  # the caller's own OpenMP setting is left alone
 
 
 def test_emd_exact_cases():

@@ -14,11 +14,15 @@ Definitions (A with n points, B with m points, d(x, B) = min_{y in B} ||x - y||_
 Both are symmetric, zero for identical clouds and in the units of the points
 (squared units for L2).
 
-The pairwise matrices build one :class:`scipy.spatial.cKDTree` per target cloud and
-query the points of *all* query clouds against it in one batched call (query points
-sorted along a Morton curve for cache locality); per-cloud means are then one
-``numpy.bincount``. Trees are processed by a thread pool (cKDTree releases the GIL),
-so the work spreads over all cores without copying clouds between processes.
+The single-pair functions use :class:`scipy.spatial.cKDTree`. The pairwise matrices
+build one :class:`pykdtree.kdtree.KDTree` per target cloud (float64, leaf size 12;
+1.7-1.9x less CPU per exact nearest-neighbour query than cKDTree on 2048-point
+clouds, the same distances up to rounding) and query the points of *all* query clouds
+against it in one batched call (query points sorted along a Morton curve for cache
+locality); per-cloud means are then one ``numpy.bincount``. Trees are processed by a
+pool of ``workers`` threads (pykdtree releases the GIL), each of which restricts
+pykdtree's own OpenMP parallelism to one thread, so ``workers`` is the number of
+threads doing queries.
 """
 
 from __future__ import annotations
@@ -27,12 +31,14 @@ from concurrent.futures import ThreadPoolExecutor
 from typing import Callable, Sequence
 
 import numpy as np
+from pykdtree import kdtree as _pykdtree
 from scipy.spatial import cKDTree
 
-from artipg.metrics.parallel import default_workers
+from artipg.metrics.parallel import default_workers, openmp_thread_setter
 
 KINDS = {"l1": 1, "l2": 2}
-_QUERY_CHUNK = 1 << 20   # query points per tree call (bounds memory to ~16 MB per thread)
+_QUERY_CHUNK = 1 << 20   # query points per tree call (bounds memory to ~20 MB per thread)
+_LEAFSIZE = 12           # points per KD-tree leaf (8-16 measured equal within noise, 32 slower)
 
 
 def _power(kind: str) -> int:
@@ -81,6 +87,13 @@ def morton_order(points: np.ndarray, bits: int = 10) -> np.ndarray:
     return np.argsort(code, kind="stable")
 
 
+def _one_openmp_thread() -> None:
+    """Thread-pool initializer: pykdtree queries issued from this thread run on this thread only."""
+    set_threads = openmp_thread_setter(_pykdtree.__file__)
+    if set_threads is not None:
+        set_threads(1)
+
+
 def directed_mean_matrix(queries: Sequence[np.ndarray], targets: Sequence[np.ndarray], power: int = 1,
                          workers: int | None = None, progress: Callable[[int], None] | None = None) -> np.ndarray:
     """Mean nearest-neighbour distance from every query cloud to every target cloud.
@@ -92,9 +105,10 @@ def directed_mean_matrix(queries: Sequence[np.ndarray], targets: Sequence[np.nda
     power : {1, 2}
         Average ``d`` (1) or ``d ** 2`` (2).
     workers : int, optional
-        Threads (default: all usable cores).
+        Threads doing queries (default: all usable cores); pykdtree's OpenMP
+        parallelism is limited to one thread inside each of them.
     progress : callable, optional
-        Called with 1 after each target cloud.
+        Called with 1 after each target cloud, from the calling thread.
 
     Returns
     -------
@@ -113,16 +127,15 @@ def directed_mean_matrix(queries: Sequence[np.ndarray], targets: Sequence[np.nda
     qpts, qid = np.ascontiguousarray(qpts[order]), qid[order]
 
     def one(j: int) -> np.ndarray:
-        tree = cKDTree(np.asarray(targets[j], dtype=np.float64), leafsize=32, balanced_tree=False, compact_nodes=False)
+        tree = _pykdtree.KDTree(np.ascontiguousarray(targets[j], dtype=np.float64), leafsize=_LEAFSIZE)
         sums = np.zeros(len(queries))
         for s in range(0, len(qpts), _QUERY_CHUNK):
-            d, _ = tree.query(qpts[s:s + _QUERY_CHUNK], k=1)
-            sums += np.bincount(qid[s:s + _QUERY_CHUNK], weights=d if power == 1 else d * d,
-                                minlength=len(queries))
+            d, _ = tree.query(qpts[s:s + _QUERY_CHUNK], k=1, sqr_dists=power == 2)  # L2: d^2 unrooted
+            sums += np.bincount(qid[s:s + _QUERY_CHUNK], weights=d, minlength=len(queries))
         return sums / sizes
 
     workers = default_workers() if workers is None else max(1, int(workers))
-    with ThreadPoolExecutor(max_workers=workers) as ex:
+    with ThreadPoolExecutor(max_workers=workers, initializer=_one_openmp_thread) as ex:
         for j, col in enumerate(ex.map(one, range(len(targets)))):
             out[:, j] = col
             if progress is not None:
