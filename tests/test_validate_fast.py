@@ -1,10 +1,13 @@
 """The vectorised machinery of the geometric checks equals its plain definitions.
 
-The checks (:mod:`artipg.validate.checks`) cull pairs by sweep and prune, build every
-joint's poses in one batch, evaluate prepared signed distances and work box-box pairs
-in one frame; each shortcut is compared here with the straightforward computation it
-replaces, on random inputs and on real objects of every registered category. Broken
-objects (a part moved away, a hinge flipped) are caught with the right names.
+The checks (:mod:`artipg.validate.checks`) cull pairs by sweep and prune (or all
+pairs at once), build every joint's poses in one batch, evaluate prepared signed
+distances, work box-box pairs in one frame (world-aligned boxes by a shortcut), cull
+samples by the radial extent of solids of revolution and compute only the samples
+of the pieces asked for; each shortcut is compared here with the straightforward
+computation it replaces, on random inputs and on real objects of every registered
+category, most of them bit for bit. Broken objects (a part moved away, a hinge
+flipped) are caught with the right names.
 """
 
 from __future__ import annotations
@@ -19,9 +22,9 @@ from artipg.geometry import cuboid, frustum, prism, ring, sphere, torus, tri_pri
 from artipg.geometry.transforms import rotation, translation
 from artipg.validate import check_object
 from artipg.validate.checks import run_checks
-from artipg.validate.contacts import (box_box, box_distance, close_pairs, evaluate, overlapping, pair_distance,
+from artipg.validate.contacts import (box_box, close_pairs, evaluate, overlapping, pair_distance,
                                       refine_distance, world_boxes)
-from artipg.validate.kinematics import Kinematics
+from artipg.validate.kinematics import Kinematics, motion, rotations
 from artipg.validate.rowsdf import PREPARE, ROW_SDF
 from artipg.validate.shapes import Pieces
 from conftest import CATEGORIES
@@ -35,18 +38,35 @@ def _pieces(obj):
 
 # ---------------------------------------------------------------- building blocks
 
+def _overlap_reference(ca, ha, cb, hb, pad):
+    """Boolean (A, B): boxes closer than ``pad`` on every axis, one pair at a time."""
+    return np.array([[all(abs(ca[i, k] - cb[j, k]) - (ha[i, k] + hb[j, k]) < pad for k in range(3))
+                      for j in range(len(cb))] for i in range(len(ca))], dtype=bool).reshape(len(ca), len(cb))
+
+
 @pytest.mark.parametrize("pad", [2e-3, 0.0, -1e-4])
 def test_close_pairs_equal_the_all_pairs_test(pad):
+    """Both the all-pairs pass (small sets) and sweep and prune (large ones), with
+    and without labels, against the plain per-pair test."""
+    import artipg.validate.contacts as contacts
+
     rng = np.random.default_rng(3)
-    for trial in range(60):
-        M = int(rng.integers(0, 50))
+    for trial in range(40):
+        M = int(rng.integers(0, 50)) if trial < 30 else int(rng.integers(contacts._DENSE - 5, contacts._DENSE + 60))
         c, h = rng.normal(size=(M, 3)) * 0.3, rng.uniform(0.0, 0.2, (M, 3))
         if trial % 2:  # touching faces and equal coordinates
             c, h = np.round(c, 1), np.round(h, 1)
+        label = rng.integers(0, 4, M)
         a, b = np.triu_indices(M, 1)
-        ov = overlapping(c, h, c, h, pad)[a, b]
+        ov = (_overlap_reference(c, h, c, h, pad) if M < 60 else overlapping(c, h, c, h, pad))[a, b]
         x, y = close_pairs(c, h, pad)
         assert np.array_equal(x, a[ov]) and np.array_equal(y, b[ov])
+        ov &= label[a] != label[b]
+        x, y = close_pairs(c, h, pad, label)
+        assert np.array_equal(x, a[ov]) and np.array_equal(y, b[ov])
+    A, B = rng.normal(size=(30, 3)) * 0.3, rng.normal(size=(20, 3)) * 0.3
+    hA, hB = rng.uniform(0.0, 0.2, (30, 3)), rng.uniform(0.0, 0.2, (20, 3))
+    assert np.array_equal(overlapping(A, hA, B, hB, pad), _overlap_reference(A, hA, B, hB, pad))
 
 
 def _sat_reference(ha, hb, Wa, Wb):
@@ -80,6 +100,50 @@ def test_box_box_equals_a_per_pair_separating_axis_test():
     ref = np.array([_sat_reference(ha[k], hb[k], Wa[k], Wb[k]) for k in range(K)])
     assert (d < 0).sum() > K // 4 and (d > 0).sum() > K // 4
     np.testing.assert_allclose(d, ref, atol=1e-12)
+
+
+def test_both_layouts_of_the_separating_axis_test_agree_bit_for_bit():
+    """Few pairs are tested as (K, 15, 3) arrays, many one coordinate at a time: the
+    same sums in the same order, so the same bits whichever way a pair goes."""
+    from artipg.validate.contacts import _sat_overlaps, _sat_overlaps_rows
+
+    rng = np.random.default_rng(6)
+    K = 400
+    ha, hb = rng.uniform(0.01, 0.1, (K, 3)), rng.uniform(0.01, 0.1, (K, 3))
+    R = np.array([rotation(rng.normal(size=3), rng.uniform(0, 3))[:3, :3] for _ in range(K)])
+    R[: K // 4] = np.eye(3)  # parallel axes: degenerate cross products
+    T = rng.normal(size=(K, 3)) * 0.05
+    assert np.array_equal(_sat_overlaps(ha, hb, R, T), _sat_overlaps_rows(ha, hb, R, T))
+
+
+def test_box_box_of_world_aligned_boxes_is_the_separating_axis_test_bit_for_bit():
+    """Boxes turned by quarter turns (axes permuted and flipped) take the world-aligned
+    shortcut, which must give exactly the general test's values, overlapping, touching
+    and apart (within the margin: exact distances; beyond: the axis gap)."""
+    from artipg.validate.contacts import _sat_box_box
+
+    rng = np.random.default_rng(8)
+    K = 600
+    quarter = [rotation(ax, k * np.pi / 2) for ax in np.eye(3) for k in range(4)]
+    for W in quarter:  # exact permutations: cos/sin of quarter turns rounded to 0, +-1
+        W[:3, :3] = np.round(W[:3, :3])
+    ha, hb = np.round(rng.uniform(0.01, 0.1, (K, 3)), 3), np.round(rng.uniform(0.01, 0.1, (K, 3)), 3)
+    Wa = np.array([quarter[i] for i in rng.integers(0, len(quarter), K)])
+    Wb = np.array([quarter[i] for i in rng.integers(0, len(quarter), K)])
+    Wa[:, :3, 3] = np.round(rng.normal(size=(K, 3)) * 0.08, 3)  # many touching faces
+    Wb[:, :3, 3] = np.round(rng.normal(size=(K, 3)) * 0.08, 3)
+    ea = np.abs(Wa[:, :3, :3]) @ ha[:, :, None]
+    eb = np.abs(Wb[:, :3, :3]) @ hb[:, :, None]
+    Wb[:60, :3, 3] = Wa[:60, :3, 3]  # face to face along x: touching
+    Wb[:60, 0, 3] += (ea + eb)[:60, 0, 0]
+    margin = np.where(rng.uniform(size=K) < 0.5, 2e-3, np.where(rng.uniform(size=K) < 0.5, 0.0, np.inf))
+    got, want = box_box(ha, hb, Wa, Wb, margin), _sat_box_box(ha, hb, Wa, Wb, margin)
+    assert np.array_equal(got, want)
+    assert (got < -1e-9).sum() > K // 5 and (np.abs(got) < 1e-9).sum() > 30 and (got > 1e-9).sum() > K // 5
+    mixed = Wa.copy()
+    mixed[::3] = rotation(rng.normal(size=3), 0.4)  # some general pairs in the same call
+    mixed[::3, :3, 3] = Wa[::3, :3, 3]
+    assert np.array_equal(box_box(ha, hb, mixed, Wb, margin), _sat_box_box(ha, hb, mixed, Wb, margin))
 
 
 @pytest.mark.parametrize("geom", list(ROW_SDF), ids=lambda g: g.name)
@@ -130,6 +194,13 @@ def test_sweep_table_and_batched_poses_equal_the_scalar_versions(category):
         P = kin.poses_batch(Q)
         for r in range(3):
             np.testing.assert_allclose(P[r], kin.poses({kin.joint_names[i]: Q[r, i] for i in mv}), atol=1e-12)
+    rng = np.random.default_rng(4)
+    a = rng.normal(size=(500, 3))
+    a /= np.linalg.norm(a, axis=1, keepdims=True)
+    a[:60] = np.eye(3)[rng.integers(0, 3, 60)]
+    q = rng.uniform(-7.0, 7.0, 500)
+    q[::7] = 0.0
+    assert np.array_equal(rotations(a, q), motion("revolute", a, q)[:, :3, :3])  # same arithmetic
 
 
 @pytest.mark.parametrize("category", CATEGORIES)
@@ -154,6 +225,61 @@ def test_evaluate_equals_the_minimum_over_all_samples(category):
                     assert got[k] == pytest.approx(want, abs=1e-12), (category, seed, k)
                 else:
                     assert got[k] > margin
+
+
+@pytest.mark.parametrize("category", CATEGORIES)
+def test_radial_cull_changes_nothing_at_or_below_the_margin(category, monkeypatch):
+    """Culling samples outside the radial extent of solids of revolution (done when
+    many samples are near) keeps every result at or below the margin."""
+    import artipg.validate.contacts as contacts
+
+    for seed in SEEDS:
+        kin, pieces = _pieces(artipg.generate(category, seed))
+        W = kin.poses()[pieces.link] @ pieces.T
+        c, h = world_boxes(pieces, W)
+        a, b = close_pairs(c, h, 0.01)
+        if not len(a):
+            continue
+        rel = np.linalg.inv(W[b]) @ W[a]
+        for margin in (0.0, 2e-3):
+            monkeypatch.setattr(contacts, "_RADIAL_CULL", 0)
+            culled = evaluate(pieces, a, b, rel, margin)
+            monkeypatch.setattr(contacts, "_RADIAL_CULL", 1 << 60)
+            full = evaluate(pieces, a, b, rel, margin)
+            low = full <= margin
+            assert np.array_equal(culled[low], full[low]) and (culled[~low] > margin).all(), (category, seed)
+
+
+def test_samples_are_the_templates_own_draws_whichever_pieces_are_asked_for():
+    """The samples of every piece are those of the geometry template's own
+    ``sample_components`` over all pieces of the template (one stream each), drawn
+    all at once or a few pieces at a time in any order (only the wanted pieces'
+    samples are computed; the stream is consumed as for all of them)."""
+    from artipg.validate.shapes import DENSITY, MAX_PER_COMPONENT, MIN_PER_COMPONENT, _BOX_FEATURES
+    from artipg.geometry.box import Cuboid
+
+    rng = np.random.default_rng(9)
+    for category in CATEGORIES:
+        for seed in SEEDS[:2]:
+            _, pieces = _pieces(artipg.generate(category, seed))
+            want = {}
+            for k, g in enumerate(pieces._kinds):
+                rows = np.flatnonzero(pieces._kind == k)
+                P = pieces.params[rows, :len(g.params)]
+                area = g.component_areas(P)
+                n = np.where(area > 0, np.clip(np.ceil(area * DENSITY), MIN_PER_COMPONENT, MAX_PER_COMPONENT), 0)
+                cells = np.repeat(np.arange(n.size), n.astype(np.int64).ravel())
+                r = cells // area.shape[1]
+                p, _ = g.sample_components(P[r], cells - r * area.shape[1], pieces._stream(k))
+                for i, row in enumerate(rows):
+                    want[row] = p[r == i]
+                    if g is Cuboid:
+                        want[row] = np.concatenate([want[row], _BOX_FEATURES * P[i]])
+            order = rng.permutation(pieces.n)
+            for chunk in np.array_split(order, 3):
+                pieces.require(chunk)
+            for row in range(pieces.n):
+                assert np.array_equal(pieces.samples(row), want[row]), (category, seed, row)
 
 
 def test_refine_bounds_the_distance_of_a_ball_over_a_box_better_than_the_samples():

@@ -25,7 +25,7 @@ import numpy as np
 
 from artipg.validate.contacts import (close_pairs, deepest_point, overlapping, pair_distance, refine_distance,
                                       world_boxes)
-from artipg.validate.kinematics import Kinematics, motion, rigid_inverse
+from artipg.validate.kinematics import Kinematics, rigid_inverse, rotations
 from artipg.validate.report import CheckResult, Issue
 from artipg.validate.shapes import Pieces
 
@@ -86,7 +86,7 @@ def run_checks(kin: Kinematics, pieces: Pieces, tol: Tolerances = Tolerances()) 
     b = np.concatenate([s["b"] for s in scenes])
     Wa = np.concatenate([s["Wa"] if s["Wa"] is not None else W0[s["a"]] for s in scenes])
     Wb = np.concatenate([s["Wb"] if s["Wb"] is not None else W0[s["b"]] for s in scenes])
-    margin = np.concatenate([np.full(len(s["a"]), s["margin"]) for s in scenes])
+    margin = np.array([s["margin"] for s in scenes]).repeat([len(s["a"]) for s in scenes])
     d = pair_distance(pieces, a, b, Wa, Wb, margin)
     k = 0
     for s in scenes:
@@ -98,8 +98,11 @@ def run_checks(kin: Kinematics, pieces: Pieces, tol: Tolerances = Tolerances()) 
     # curved pieces whose samples say "apart" while their boxes say "maybe touching"
     # (a ball on a plane): refine the distance before judging contact
     ra, rb, rd = rest_s["a"], rest_s["b"], rest_s["d"]
-    lb = np.sqrt((np.maximum(np.abs(c0[ra] - c0[rb]) - h0[ra] - h0[rb], 0.0) ** 2).sum(axis=1))
-    amb = np.flatnonzero(~(pieces.is_box[ra] & pieces.is_box[rb]) & (rd > tol.floating) & (lb <= tol.floating))
+    amb = (~(pieces.is_box[ra] & pieces.is_box[rb]) & (rd > tol.floating)).nonzero()[0]
+    if len(amb):
+        ia, ib = ra[amb], rb[amb]
+        lb = np.sqrt((np.maximum(np.abs(c0[ia] - c0[ib]) - h0[ia] - h0[ib], 0.0) ** 2).sum(axis=1))
+        amb = amb[lb <= tol.floating]
     if len(amb):
         rd[amb] = np.minimum(rd[amb], refine_distance(pieces, ra[amb], rb[amb], W0[ra[amb]], W0[rb[amb]],
                                                       iters=3, stop_below=tol.floating))
@@ -114,106 +117,101 @@ def run_checks(kin: Kinematics, pieces: Pieces, tol: Tolerances = Tolerances()) 
 
 def _rest_pairs(pieces, c0, h0, tol) -> dict:
     """Pieces of different parts within the floating tolerance of each other at rest."""
-    a, b = close_pairs(c0, h0, tol.floating)
-    ov = pieces.part[a] != pieces.part[b]
-    return {"a": a[ov], "b": b[ov], "Wa": None, "Wb": None, "margin": tol.floating}
+    a, b = close_pairs(c0, h0, tol.floating, pieces.part)
+    return {"a": a, "b": b, "Wa": None, "Wb": None, "margin": tol.floating}
 
 
 def _sweep_pairs(kin, pieces, rest, W0, c0, h0, tol) -> dict:
     """Each movable joint at ``tol.sweep_poses`` values: moving pieces against the
-    pieces that stay at rest, culled first by swept then by per-pose boxes."""
+    pieces that stay at rest, culled first by swept then by per-pose boxes.
+
+    Rows come grouped by (joint, moving piece), then by static piece, then by pose."""
     movable = kin.movable()
     empty = np.zeros(0, dtype=np.int64)
     out = {"a": empty, "b": empty, "Wa": np.zeros((0, 4, 4)), "Wb": np.zeros((0, 4, 4)), "margin": 0.0,
            "scene": empty, "joint": empty, "q": np.zeros(0), "movable": movable}
     if not len(movable) or pieces.n == 0:
         return out
+    axes = kin.world_axes(rest)
     subtree = kin.descendants[movable][:, pieces.link]  # (J, M): pieces each joint moves
     # a solid of revolution turning about its own axis occupies the same space at
     # every joint value: its rest result stands for the whole sweep
-    moving = subtree & ~_turns_in_place(kin, pieces, rest, W0, movable)
+    moving = subtree & ~_turns_in_place(kin, pieces, axes, W0)
     scene_joint, scene_q = kin.sweep_table(tol.sweep_poses)
     out["joint"], out["q"] = scene_joint, scene_q
-    GR, Gt = _world_motions(kin, rest, movable, scene_joint, scene_q)  # (S, 3, 3), (S, 3)
-    s_idx, p_idx = np.nonzero(moving[scene_joint])  # (scene, moving piece) rows
-    if not len(s_idx):
+    uj, up = np.nonzero(moving)  # (joint, moving piece) pairs
+    if not len(uj):
         return out
+    # every pose of each pair: the scenes of a joint are consecutive
+    n_pose = np.bincount(scene_joint, minlength=len(movable))
+    first = n_pose.cumsum() - n_pose
+    counts = n_pose[uj]
+    starts = counts.cumsum() - counts
+    s_idx = np.arange(counts.sum()) + (first[uj] - starts).repeat(counts)
+    p_idx = up.repeat(counts)
+    GR, Gt = _world_motions(kin, axes, scene_joint, scene_q)  # (S, 3, 3), (S, 3)
+    GR, Gt = GR[s_idx], Gt[s_idx]  # every row's
     # boxes of the moving pieces at every pose: centre G c0, axes G R0
-    Rg, R0 = GR[s_idx], W0[p_idx, :3, :3]
-    Rm = (Rg[:, :, 0, None] * R0[:, 0, None, :] + Rg[:, :, 1, None] * R0[:, 1, None, :]
-          + Rg[:, :, 2, None] * R0[:, 2, None, :])
+    R0 = W0[p_idx, :3, :3]
+    Rm = (GR[:, :, 0, None] * R0[:, 0, None, :] + GR[:, :, 1, None] * R0[:, 1, None, :]
+          + GR[:, :, 2, None] * R0[:, 2, None, :])
     c = c0[p_idx]
-    cm = Rg[:, :, 0] * c[:, 0, None] + Rg[:, :, 1] * c[:, 1, None] + Rg[:, :, 2] * c[:, 2, None] + Gt[s_idx]
-    Am, hp = np.abs(Rm), pieces.half[p_idx]
+    cm = GR[:, :, 0] * c[:, 0, None] + GR[:, :, 1] * c[:, 1, None] + GR[:, :, 2] * c[:, 2, None] + Gt
+    hp = pieces.half[p_idx]
+    Am = np.abs(Rm)
     hm = Am[:, :, 0] * hp[:, 0, None] + Am[:, :, 1] * hp[:, 1, None] + Am[:, :, 2] * hp[:, 2, None]
     # swept box of each (joint, moving piece) over all its poses
-    key = scene_joint[s_idx] * pieces.n + p_idx
-    order = np.argsort(key, kind="stable")
-    ks = key[order]
-    starts = np.concatenate([[0], (ks[1:] != ks[:-1]).nonzero()[0] + 1])
-    ukey = ks[starts]
-    counts = np.diff(np.append(starts, len(ks)))
-    lo = np.minimum.reduceat((cm - hm)[order], starts)
-    hi = np.maximum.reduceat((cm + hm)[order], starts)
-    cand = overlapping(0.5 * (lo + hi), 0.5 * (hi - lo), c0, h0, -_OVERLAP) & ~subtree[ukey // pieces.n]
+    lo = np.minimum.reduceat(cm - hm, starts)
+    hi = np.maximum.reduceat(cm + hm, starts)
+    cand = overlapping(0.5 * (lo + hi), 0.5 * (hi - lo), c0, h0, -_OVERLAP) & ~subtree[uj]
     u, b = np.nonzero(cand)
     if not len(u):
         return out
     # expand the candidates over the poses of their joint and test per-pose boxes
     n_rep = counts[u]
-    rows = order[np.repeat(starts[u], n_rep) + (np.arange(n_rep.sum()) - np.repeat(np.cumsum(n_rep) - n_rep, n_rep))]
-    bb = np.repeat(b, n_rep)
+    rows = np.arange(n_rep.sum()) + (starts[u] - (n_rep.cumsum() - n_rep)).repeat(n_rep)
+    bb = b.repeat(n_rep)
     ok = (np.abs(cm[rows] - c0[bb]) - (hm[rows] + h0[bb]) < -_OVERLAP).all(axis=1)
     rows, bb = rows[ok], bb[ok]
     Wm = np.zeros((len(rows), 4, 4))
     Wm[:, :3, :3] = Rm[rows]
-    Rr, t0 = Rg[rows], W0[p_idx[rows], :3, 3]
+    Rr, t0 = GR[rows], W0[p_idx[rows], :3, 3]
     Wm[:, :3, 3] = (Rr[:, :, 0] * t0[:, 0, None] + Rr[:, :, 1] * t0[:, 1, None] + Rr[:, :, 2] * t0[:, 2, None]
-                    + Gt[s_idx[rows]])
+                    + Gt[rows])
     Wm[:, 3, 3] = 1.0
     out.update(a=p_idx[rows], b=bb, Wa=Wm, Wb=W0[bb], scene=s_idx[rows])
     return out
 
 
-def _world_motions(kin, rest, movable, scene_joint, q):
+def _world_motions(kin, axes, joint, q):
     """Rigid motions (rotation (S, 3, 3), translation (S, 3)), object frame, that move
-    the subtree of joint ``movable[scene_joint]`` from rest to joint value ``q``: a turn
-    about the joint's world axis line or a slide along its world axis."""
-    link = movable[scene_joint]
-    R, p = rest[link, :3, :3], rest[link, :3, 3]
-    ax = kin.axis[link]
-    a = R[:, :, 0] * ax[:, 0, None] + R[:, :, 1] * ax[:, 1, None] + R[:, :, 2] * ax[:, 2, None]  # world axes
-    slide = np.array([kin.joint_types[i] == "prismatic" for i in movable])[scene_joint]
-    ang = np.where(slide, 0.0, q)
-    M = motion("revolute", a, ang)[:, :3, :3]
+    the subtree of joint ``kin.movable()[joint]`` from rest to joint value ``q``: a
+    turn about the joint's world axis line or a slide along its world axis (``axes``:
+    :meth:`Kinematics.world_axes` at rest)."""
+    a, p = axes[0][joint], axes[1][joint]
+    slide = kin.slides[joint]
+    M = rotations(a, np.where(slide, 0.0, q))
     Mp = M[:, :, 0] * p[:, 0, None] + M[:, :, 1] * p[:, 1, None] + M[:, :, 2] * p[:, 2, None]
     t = np.where(slide[:, None], q[:, None] * a, p - Mp)
     return M, t
 
 
-def _turns_in_place(kin, pieces, rest, W0, movable) -> np.ndarray:
+def _turns_in_place(kin, pieces, axes, W0) -> np.ndarray:
     """Boolean (J, M): piece m is a full solid of revolution (frustum, full ring or
     torus, sphere) whose axis is joint j's (revolute or continuous) axis line."""
-    out = np.zeros((len(movable), pieces.n), dtype=bool)
-    sym = pieces.symmetric
-    if not sym.any():
+    J = len(axes[0])
+    out = np.zeros((J, pieces.n), dtype=bool)
+    m = pieces.symmetric_rows
+    if not len(m):
         return out
-    m = np.flatnonzero(sym)
     z = W0[m, :3, 2][None]  # (1, m, 3)
-    o = W0[m, :3, 3][None]
-    R = rest[movable]
-    u = kin.axis[movable]
-    a = (R[:, :3, 0] * u[:, 0, None] + R[:, :3, 1] * u[:, 1, None] + R[:, :3, 2] * u[:, 2, None])[:, None, :]  # world
-    p = R[:, None, :3, 3]
+    a = axes[0][:, None, :]  # (J, 1, 3)
     zx, zy, zz = z[..., 0], z[..., 1], z[..., 2]
     ax, ay, az = a[..., 0], a[..., 1], a[..., 2]
     cross = np.maximum(np.maximum(np.abs(zy * az - zz * ay), np.abs(zz * ax - zx * az)), np.abs(zx * ay - zy * ax))
-    along = cross < 1e-9
-    d = o - p  # (J, m, 3)
+    d = W0[m, :3, 3][None] - axes[1][:, None, :]  # (J, m, 3)
     r = d - (d * a).sum(axis=2, keepdims=True) * a
-    on_axis = np.sqrt((r * r).sum(axis=2)) < 1e-9
-    rev = np.array([kin.joint_types[i] != "prismatic" for i in movable])
-    out[:, m] = along & on_axis & rev[:, None]
+    out[:, m] = (cross < 1e-9) & (np.sqrt((r * r).sum(axis=2)) < 1e-9) & ~kin.slides[:, None]
     return out
 
 
@@ -230,10 +228,7 @@ def _open_pairs(kin, pieces, rest, frac) -> dict:
     for i, f in enumerate(first):  # the first earlier link with the same motion
         if f < i:
             label[i] = label[f]
-    group = np.array(label)[pieces.link]
-    a, b = close_pairs(c, h, -_OVERLAP)
-    keep = group[a] != group[b]
-    a, b = a[keep], b[keep]
+    a, b = close_pairs(c, h, -_OVERLAP, np.array(label)[pieces.link])
     return {"a": a, "b": b, "Wa": W[a], "Wb": W[b], "margin": 0.0, "frac": frac}
 
 
@@ -260,7 +255,7 @@ def _worst_per_group(keys: np.ndarray, values: np.ndarray):
 def _penetration(kin, pieces, s, tol) -> CheckResult:
     a, b, D = s["a"], s["b"], s["d"]
     cross = pieces.link[a] != pieces.link[b]
-    bad = np.flatnonzero(cross & (D < -tol.penetration))
+    bad = (cross & (D < -tol.penetration)).nonzero()[0]
     issues = []
     if len(bad):
         parts = np.sort(np.column_stack([pieces.part[a[bad]], pieces.part[b[bad]]]), axis=1)
@@ -284,19 +279,21 @@ def _components(n: int, i: np.ndarray, j: np.ndarray) -> np.ndarray:
             x = parent[x]
         return x
 
-    for a, b in zip(i.tolist(), j.tolist()):
-        ra, rb = root(a), root(b)
-        if ra != rb:
-            parent[max(ra, rb)] = min(ra, rb)
+    if len(i):
+        e = np.unique(np.minimum(i, j) * n + np.maximum(i, j))  # each undirected edge once
+        for a, b in zip((e // n).tolist(), (e % n).tolist()):
+            ra, rb = root(a), root(b)
+            if ra != rb:
+                parent[max(ra, rb)] = min(ra, rb)
     return np.array([root(x) for x in range(n)], dtype=np.int64)
 
 
 def _gap(pieces, W0, src_mask, tgt_mask) -> float:
     """Smallest distance (metres) between two sets of pieces at rest."""
-    a, b = np.flatnonzero(src_mask), np.flatnonzero(tgt_mask)
+    a, b = src_mask.nonzero()[0], tgt_mask.nonzero()[0]
     if not len(a) or not len(b):
         return float("inf")
-    A, B = np.repeat(a, len(b)), np.tile(b, len(a))
+    A, B = a.repeat(len(b)), np.tile(b, len(a))
     # box-distance lower bounds: evaluate the most promising pairs, then only the
     # pairs that could still beat the best distance found
     c, h = world_boxes(pieces, W0)
@@ -327,13 +324,13 @@ def _floating(kin, pieces, W0, s, tol) -> CheckResult:
     # links: one contact graph holding the root (or the first link with geometry)
     cross = touch & (pieces.link[a] != pieces.link[b])
     comp = _components(L, pieces.link[a[cross]], pieces.link[b[cross]])
-    geo = np.flatnonzero(has_geom)
+    geo = has_geom.nonzero()[0]
     if len(geo):
         main = comp[geo[0]]
         for c in np.unique(comp[geo]):
             if c == main:
                 continue
-            links = np.flatnonzero((comp == c) & has_geom)
+            links = ((comp == c) & has_geom).nonzero()[0]
             gap = _gap(pieces, W0, np.isin(pieces.link, links), comp[pieces.link] == main)
             if gap <= tol.floating:  # a curved contact the quick pass could not confirm
                 continue
@@ -345,12 +342,16 @@ def _floating(kin, pieces, W0, s, tol) -> CheckResult:
     same = touch & (pieces.link[a] == pieces.link[b])
     pcomp = _components(P, pieces.part[a[same]], pieces.part[b[same]])
     has_piece = np.bincount(pieces.part, minlength=P) > 0
-    weight = np.bincount(pieces.part, weights=np.prod(2 * pieces.half, axis=1), minlength=P)
-    hp = np.flatnonzero(has_piece)
-    key = np.unique(pieces.part_link[hp] * P + pcomp[hp]) // P  # link of each (link, component)
-    split = np.unique(key[1:][key[1:] == key[:-1]])
-    for li in split.tolist():
-        parts = np.flatnonzero((pieces.part_link == li) & has_piece)
+    hp = has_piece.nonzero()[0]
+    # links whose parts fall into more than one component
+    lo, hi = np.full(kin.n_links, P), np.full(kin.n_links, -1)
+    np.minimum.at(lo, pieces.part_link[hp], pcomp[hp])
+    np.maximum.at(hi, pieces.part_link[hp], pcomp[hp])
+    split = (hi > lo).nonzero()[0].tolist()
+    if split:
+        weight = np.bincount(pieces.part, weights=np.prod(2 * pieces.half, axis=1), minlength=P)
+    for li in split:
+        parts = ((pieces.part_link == li) & has_piece).nonzero()[0]
         cs = np.unique(pcomp[parts])
         size = {c: weight[parts[pcomp[parts] == c]].sum() for c in cs}
         main = max(cs, key=lambda c: (size[c], -c))
@@ -394,30 +395,45 @@ def _needs_open(kin, pieces, sw, tol, bad) -> dict:
     """Sweep collisions with a part that another joint moves (a rack behind a
     dishwasher door): re-checked with that joint open; returns {(j, k): depth} of
     the (moving joint, blocking joint) link indices, depth < 0 when opening k clears
-    the way for j."""
+    the way for j. All (j, k) pairs share one batch of poses and one distance pass."""
     pairs = {}
     for j, k in zip(*_blockers(kin, pieces, sw, bad)):  # in order of first occurrence
         if k > 0:
             pairs[(j, k)] = None
-    out = {}
+    pairs = list(pairs)
+    if not pairs:
+        return {}
+    up = kin.open_values(1.0)
+    Qs, rows, A, B, Wa, Wb, owner = [], 0, [], [], [], [], []
     for j, k in pairs:
-        sub_j = kin.subtree(j)[pieces.link]
-        sub_k = kin.subtree(k)[pieces.link]
-        up = kin.open_values(1.0)[kin.joint_names[k]]
         qs = kin.sweep_values(j, tol.sweep_poses)
         Q = np.zeros((len(qs), kin.n_links))
-        Q[:, j], Q[:, k] = qs, up
-        a, b = np.flatnonzero(sub_j & ~sub_k), np.flatnonzero(sub_k & ~sub_j)
+        Q[:, j], Q[:, k] = qs, up[kin.joint_names[k]]
+        Qs.append(Q)
+    P = kin.poses_batch(np.concatenate(Qs))
+    for p, (j, k) in enumerate(pairs):
+        S = len(Qs[p])
+        sub_j = kin.subtree(j)[pieces.link]
+        sub_k = kin.subtree(k)[pieces.link]
+        a, b = (sub_j & ~sub_k).nonzero()[0], (sub_k & ~sub_j).nonzero()[0]
         both = np.concatenate([a, b])
-        W = kin.poses_batch(Q)[:, pieces.link[both]] @ pieces.T[both]  # (S, |a| + |b|, 4, 4)
-        c, h = world_boxes(pieces, W.reshape(-1, 4, 4), np.tile(both, len(qs)))
-        c, h = c.reshape(len(qs), len(both), 3), h.reshape(len(qs), len(both), 3)
+        W = P[rows:rows + S][:, pieces.link[both]] @ pieces.T[both]  # (S, |a| + |b|, 4, 4)
+        rows += S
+        c, h = world_boxes(pieces, W.reshape(-1, 4, 4), np.tile(both, S))
+        c, h = c.T.reshape(3, S, len(both)), h.T.reshape(3, S, len(both))  # one axis at a time
         na = len(a)
-        gap = np.abs(c[:, :na, None] - c[:, None, na:]) - (h[:, :na, None] + h[:, None, na:])
-        si, ia, ib = np.nonzero((gap < -_OVERLAP).all(axis=3))
-        d = (pair_distance(pieces, a[ia], b[ib], W[si, ia], W[si, na + ib], 0.0) if len(ia) else np.zeros(0))
-        out[(j, k)] = float(-d.min()) if len(d) else 0.0
-    return out
+        ok = True
+        for k in range(3):
+            ok = ok & (np.abs(c[k, :, :na, None] - c[k, :, None, na:]) - (h[k, :, :na, None] + h[k, :, None, na:])
+                       < -_OVERLAP)
+        si, ia, ib = np.nonzero(ok)
+        A.append(a[ia]), B.append(b[ib]), Wa.append(W[si, ia]), Wb.append(W[si, na + ib])
+        owner.append(np.full(len(ia), p))
+    owner = np.concatenate(owner)
+    d = pair_distance(pieces, np.concatenate(A), np.concatenate(B), np.concatenate(Wa), np.concatenate(Wb), 0.0)
+    worst = np.full(len(pairs), -np.inf)
+    np.maximum.at(worst, owner, -d)
+    return {jk: float(w) if np.isfinite(w) else 0.0 for jk, w in zip(pairs, worst)}
 
 
 def _sweep_result(kin, pieces, sw, opens, tol) -> CheckResult:
@@ -425,7 +441,7 @@ def _sweep_result(kin, pieces, sw, opens, tol) -> CheckResult:
     D = sw["d"]
     worst = max(0.0, float(-D.min())) if len(D) else 0.0
     info = {"joints": int(len(sw["movable"])), "poses": int(len(sw["q"])), "open_poses": len(opens)}
-    bad = np.flatnonzero(D < -tol.penetration)
+    bad = (D < -tol.penetration).nonzero()[0]
     if len(bad):
         # a collision with a part another joint moves is no fault when opening that
         # joint clears the way (racks behind a door): keep the rest
@@ -450,7 +466,7 @@ def _sweep_result(kin, pieces, sw, opens, tol) -> CheckResult:
         D = s["d"]
         if len(D):
             worst = max(worst, float(-D.min()))
-        bad = np.flatnonzero(D < -tol.penetration)
+        bad = (D < -tol.penetration).nonzero()[0]
         if len(bad):
             keys = np.column_stack([pieces.link[s["a"][bad]], pieces.link[s["b"][bad]]])
             for w in bad[_worst_per_group(keys, D[bad])]:

@@ -11,8 +11,13 @@ in the world, a signed separation in metres: negative values are penetration dep
 - ball-ball pairs (whole spheres): centre distance minus the radii, exact.
 - other pairs: the surface samples of each piece are moved into the other's frame
   and its exact SDF is evaluated (both directions); the minimum is the result. Only
-  samples inside the target's bounding box (plus ``margin``) are evaluated exactly,
-  so a result above ``margin`` only says that the pair is farther apart than that.
+  samples inside the target's bounding box (plus ``margin``) are evaluated exactly
+  (for solids of revolution, also inside its radial extent plus ``margin``), so a
+  result above ``margin`` only says that the pair is farther apart than that.
+
+Box-box pairs whose rotations only permute and flip the world axes (most boxes of
+furniture at rest and along prismatic joints) take a shortcut with the same
+arithmetic: the overlap of their world-aligned boxes.
 """
 
 from __future__ import annotations
@@ -51,19 +56,36 @@ def transform_boxes(W: np.ndarray, c: np.ndarray, h: np.ndarray):
 def overlapping(ca, ha, cb, hb, pad: float) -> np.ndarray:
     """Boolean (A, B): boxes a and b are closer than ``pad`` on every axis (``pad`` > 0
     accepts boxes up to ``pad`` apart; ``pad`` < 0 demands an overlap of ``-pad``)."""
-    d = np.abs(ca[:, None, :] - cb[None, :, :]) - (ha[:, None, :] + hb[None, :, :])
-    return (d < pad).all(axis=2)
+    ca, ha, cb, hb = (np.ascontiguousarray(x.T) for x in (ca, ha, cb, hb))  # one axis at a time: 2-D passes
+    ok = np.abs(ca[0][:, None] - cb[0]) - (ha[0][:, None] + hb[0]) < pad
+    ok &= np.abs(ca[1][:, None] - cb[1]) - (ha[1][:, None] + hb[1]) < pad
+    ok &= np.abs(ca[2][:, None] - cb[2]) - (ha[2][:, None] + hb[2]) < pad
+    return ok
 
 
-def close_pairs(c: np.ndarray, h: np.ndarray, pad: float) -> tuple[np.ndarray, np.ndarray]:
+#: Largest number of boxes for which :func:`close_pairs` tests all pairs directly.
+_DENSE = 256
+
+
+def close_pairs(c: np.ndarray, h: np.ndarray, pad: float, label: np.ndarray | None = None
+                ) -> tuple[np.ndarray, np.ndarray]:
     """All pairs ``a < b`` of boxes (centres ``c``, half extents ``h``: (M, 3)) closer
-    than ``pad`` on every axis (see :func:`overlapping`), in ``np.triu_indices`` order.
+    than ``pad`` on every axis (see :func:`overlapping`), in ``np.triu_indices`` order;
+    with ``label`` (M,), only pairs of different labels.
 
-    Sweep and prune: boxes sorted by their lower x bound, each is paired only with
-    those that start before it ends; the exact test of :func:`overlapping` is then
-    applied to these candidates.
+    Up to ``_DENSE`` boxes, every pair is tested at once by :func:`overlapping` (three
+    (M, M) passes are cheaper than sorting); beyond, sweep and prune: boxes sorted by
+    their lower x bound, each is paired only with those that start before it ends, and
+    the same test is applied to these candidates.
     """
     M = len(c)
+    if M <= _DENSE:
+        ok = overlapping(c, h, c, h, pad)
+        if label is not None:
+            ok &= label[:, None] != label
+        a, b = ok.nonzero()
+        upper = a < b
+        return a[upper], b[upper]
     lo = c[:, 0] - h[:, 0]
     order = np.argsort(lo, kind="stable")
     end = np.searchsorted(lo[order], (c[:, 0] + h[:, 0])[order] + (pad + 1e-9), side="right")
@@ -71,11 +93,13 @@ def close_pairs(c: np.ndarray, h: np.ndarray, pad: float) -> tuple[np.ndarray, n
     total = int(n.sum())
     if not total:
         return np.zeros(0, dtype=np.int64), np.zeros(0, dtype=np.int64)
-    i = np.repeat(np.arange(M), n)
-    j = np.arange(total) - np.repeat(np.cumsum(n) - n - 1, n) + i
+    i = np.arange(M).repeat(n)
+    j = np.arange(total) - (n.cumsum() - n - 1).repeat(n) + i
     u, v = order[i], order[j]
     a, b = np.minimum(u, v), np.maximum(u, v)
     ok = (np.abs(c[a] - c[b]) - (h[a] + h[b]) < pad).all(axis=1)
+    if label is not None:
+        ok &= label[a] != label[b]
     a, b = a[ok], b[ok]
     key = np.argsort(a * M + b)
     return a[key], b[key]
@@ -105,17 +129,17 @@ def pair_distance(pieces: Pieces, a: np.ndarray, b: np.ndarray, Wa: np.ndarray, 
     out = np.empty(K)
     if K == 0:
         return out
-    margin = np.broadcast_to(np.asarray(margin, dtype=float), (K,))
+    margin = _per_row(margin, K)
     box = pieces.is_box[a] & pieces.is_box[b]
-    i = np.flatnonzero(box)
+    i = box.nonzero()[0]
     if len(i):
         out[i] = box_box(pieces.params[a[i], :3] / 2, pieces.params[b[i], :3] / 2, Wa[i], Wb[i], margin[i])
     ball = pieces.is_ball[a] & pieces.is_ball[b]
-    i = np.flatnonzero(ball)
+    i = ball.nonzero()[0]
     if len(i):  # exact: centre distance minus the radii
         gap = Wa[i, :3, 3] - Wb[i, :3, 3]
         out[i] = np.sqrt((gap * gap).sum(axis=1)) - pieces.params[a[i], 0] - pieces.params[b[i], 0]
-    i = np.flatnonzero(~box & ~ball)
+    i = (~box & ~ball).nonzero()[0]
     if len(i):
         rel_ab = rigid_inverse(Wb[i]) @ Wa[i]
         rel_ba = rigid_inverse(Wa[i]) @ Wb[i]
@@ -125,12 +149,38 @@ def pair_distance(pieces: Pieces, a: np.ndarray, b: np.ndarray, Wa: np.ndarray, 
     return out
 
 
+def _per_row(value, K: int) -> np.ndarray:
+    """``value`` (a number or (K,)) as a float array (K,)."""
+    value = np.asarray(value, dtype=float)
+    return value if value.ndim else np.full(K, float(value))
+
+
 def box_box(ha: np.ndarray, hb: np.ndarray, Wa: np.ndarray, Wb: np.ndarray, margin: np.ndarray) -> np.ndarray:
     """Signed separation of oriented boxes with half extents ``ha``, ``hb`` (K, 3) at
     poses ``Wa``, ``Wb`` (K, 4, 4): minus the exact penetration depth when they
     overlap; when apart by at most ``margin`` (K,), the exact distance or, if it
     is already known to be within ``margin``, an upper bound that is; otherwise the
     separating-axis gap (a lower bound of the distance)."""
+    A = Wa[:, :3, :3]
+    B = Wb[:, :3, :3]
+    # boxes whose axes are world axes (rotations that only permute and flip them):
+    # the separating axes are the world axes and the overlap along each is that of
+    # the world-aligned boxes, which is the same arithmetic as the general test gives
+    # for them (every product with a 0 or 1 is exact)
+    aligned = ((A == 0.0) | (np.abs(A) == 1.0)).all(axis=(1, 2)) & ((B == 0.0) | (np.abs(B) == 1.0)).all(axis=(1, 2))
+    if aligned.all():
+        return _aligned_box_box(ha, hb, Wa, Wb, margin)
+    if not aligned.any():
+        return _sat_box_box(ha, hb, Wa, Wb, margin)
+    out = np.empty(len(ha))
+    i, g = aligned.nonzero()[0], (~aligned).nonzero()[0]
+    out[i] = _aligned_box_box(ha[i], hb[i], Wa[i], Wb[i], margin[i])
+    out[g] = _sat_box_box(ha[g], hb[g], Wa[g], Wb[g], margin[g])
+    return out
+
+
+def _sat_box_box(ha, hb, Wa, Wb, margin) -> np.ndarray:
+    """:func:`box_box` by the separating-axis test over the 15 axes of two oriented boxes."""
     K = len(ha)
     A = Wa[:, :3, :3]  # columns: box axes in the world
     B = Wb[:, :3, :3]
@@ -138,7 +188,24 @@ def box_box(ha: np.ndarray, hb: np.ndarray, Wa: np.ndarray, Wb: np.ndarray, marg
     # everything in a's frame: R = A^T B (columns: b's axes), T = A^T t
     R = A[:, 0, :, None] * B[:, 0, None, :] + A[:, 1, :, None] * B[:, 1, None, :] + A[:, 2, :, None] * B[:, 2, None, :]
     T = A[:, 0] * t[:, 0, None] + A[:, 1] * t[:, 1, None] + A[:, 2] * t[:, 2, None]
-    # the 15 candidate axes (a's, b's, a_i x b_j), unnormalised, in a's frame
+    # the 15 candidate axes (a's, b's, a_i x b_j), unnormalised, in a's frame; for
+    # many pairs one coordinate at a time ((K, 15) arrays: contiguous passes), for a
+    # few as (K, 15, 3) arrays (fewer passes); the same sums in the same order
+    over = (_sat_overlaps_rows if K >= _SAT_ROWS else _sat_overlaps)(ha, hb, R, T)
+    depth = over.min(axis=1)
+    out = -depth
+    sep = depth < 0
+    near = (sep & (-depth <= margin)).nonzero()[0]
+    if len(near):
+        m = margin[near]
+        out[near] = box_distance(ha[near], hb[near], Wa[near], Wb[near], np.where(np.isfinite(m), m, -1.0))
+    return out
+
+
+def _sat_overlaps(ha, hb, R, T) -> np.ndarray:
+    """Overlap (K, 15) of boxes ``ha``, ``hb`` (K, 3) along the separating axes, in a's
+    frame (``R``: b's axes as columns, ``T``: b's centre; inf for degenerate axes)."""
+    K = len(ha)
     axes = np.zeros((K, 15, 3))
     axes[:, 0, 0] = axes[:, 1, 1] = axes[:, 2, 2] = 1.0
     axes[:, 3:6] = R.transpose(0, 2, 1)
@@ -153,11 +220,39 @@ def box_box(ha: np.ndarray, hb: np.ndarray, Wa: np.ndarray, Wb: np.ndarray, marg
     rb = (np.abs(P) * hb[:, None, :]).sum(axis=2)
     dist = np.abs((axes * T[:, None, :]).sum(axis=2))
     over = (ra + rb - dist) / np.where(ok, n, 1.0)  # overlap along each axis (negative: separated)
-    over = np.where(ok, over, np.inf)
-    depth = over.min(axis=1)
-    out = -depth
-    sep = depth < 0
-    near = np.flatnonzero(sep & (-depth <= margin))
+    return np.where(ok, over, np.inf)
+
+
+def _sat_overlaps_rows(ha, hb, R, T) -> np.ndarray:
+    """:func:`_sat_overlaps` with each coordinate of the axes as a (K, 15) array."""
+    K = len(ha)
+    ax, ay, az = np.zeros((3, K, 15))
+    ax[:, 0] = ay[:, 1] = az[:, 2] = 1.0
+    ax[:, 3:6], ay[:, 3:6], az[:, 3:6] = R[:, 0], R[:, 1], R[:, 2]
+    ay[:, 6:9], az[:, 6:9] = -R[:, 2], R[:, 1]      # a_0 x b_j
+    ax[:, 9:12], az[:, 9:12] = R[:, 2], -R[:, 0]    # a_1 x b_j
+    ax[:, 12:15], ay[:, 12:15] = -R[:, 1], R[:, 0]  # a_2 x b_j
+    n = np.sqrt(ax * ax + ay * ay + az * az)
+    ok = n > 1e-9
+    ra = np.abs(ax) * ha[:, 0, None] + np.abs(ay) * ha[:, 1, None] + np.abs(az) * ha[:, 2, None]
+    rb = [np.abs(ax * R[:, 0, c, None] + ay * R[:, 1, c, None] + az * R[:, 2, c, None]) * hb[:, c, None]
+          for c in range(3)]
+    dist = np.abs(ax * T[:, 0, None] + ay * T[:, 1, None] + az * T[:, 2, None])
+    over = (ra + (rb[0] + rb[1] + rb[2]) - dist) / np.where(ok, n, 1.0)
+    return np.where(ok, over, np.inf)
+
+
+#: Pairs from which :func:`_sat_box_box` works one coordinate at a time.
+_SAT_ROWS = 32
+
+
+def _aligned_box_box(ha, hb, Wa, Wb, margin) -> np.ndarray:
+    """:func:`box_box` of boxes whose rotations only permute and flip the world axes."""
+    A, B = np.abs(Wa[:, :3, :3]), np.abs(Wb[:, :3, :3])
+    ea = A[:, :, 0] * ha[:, 0, None] + A[:, :, 1] * ha[:, 1, None] + A[:, :, 2] * ha[:, 2, None]
+    eb = B[:, :, 0] * hb[:, 0, None] + B[:, :, 1] * hb[:, 1, None] + B[:, :, 2] * hb[:, 2, None]
+    out = (np.abs(Wa[:, :3, 3] - Wb[:, :3, 3]) - (ea + eb)).max(axis=1)  # minus the smallest overlap
+    near = ((out > 0) & (out <= margin)).nonzero()[0]
     if len(near):
         m = margin[near]
         out[near] = box_distance(ha[near], hb[near], Wa[near], Wb[near], np.where(np.isfinite(m), m, -1.0))
@@ -184,11 +279,11 @@ def box_distance(ha, hb, Wa, Wb, edge_margin=None) -> np.ndarray:
     vb_a = (R[:, None, 0, :] * vb[..., 0, None] + R[:, None, 1, :] * vb[..., 1, None]
             + R[:, None, 2, :] * vb[..., 2, None] + u[:, None, :])
     K = len(ha)
-    d1 = cuboid_rows(np.repeat(2 * hb, 8, axis=0), va_b.reshape(-1, 3)).reshape(K, 8).min(axis=1)
-    d2 = cuboid_rows(np.repeat(2 * ha, 8, axis=0), vb_a.reshape(-1, 3)).reshape(K, 8).min(axis=1)
+    d1 = cuboid_rows((2 * hb).repeat(8, axis=0), va_b.reshape(-1, 3)).reshape(K, 8).min(axis=1)
+    d2 = cuboid_rows((2 * ha).repeat(8, axis=0), vb_a.reshape(-1, 3)).reshape(K, 8).min(axis=1)
     out = np.minimum(d1, d2)
     if edge_margin is not None:  # edges matter only where the vertex bound is not yet enough
-        need = np.flatnonzero(out > edge_margin)
+        need = (out > edge_margin).nonzero()[0]
     else:
         need = np.arange(K)
     if len(need):
@@ -241,38 +336,53 @@ def evaluate(pieces: Pieces, src: np.ndarray, tgt: np.ndarray, rel: np.ndarray, 
     out = np.full(K, np.inf)
     if K == 0:
         return out
-    pieces.require(src)  # every source, so that the sample stream does not depend on culling
-    m = np.broadcast_to(np.asarray(margin, dtype=float), (K,))
+    m = _per_row(margin, K)
     # jobs whose source box, posed in the target frame, stays farther than the margin
     # from the target box on some axis have no sample within the margin
     c, e = transform_boxes(rel, pieces.center[src], pieces.half[src])
     ct, ht = pieces.center[tgt], pieces.half[tgt]
-    keep = np.flatnonzero((np.abs(c - ct) - e - ht <= m[:, None]).all(axis=1))
+    keep = (np.abs(c - ct) - e - ht <= m[:, None]).all(axis=1).nonzero()[0]
     if not len(keep):
         return out
-    counts = pieces.count[src[keep]]
-    k = len(keep)
-    first = np.cumsum(counts) - counts
-    total = int(counts.sum())
-    idx = np.arange(total) + np.repeat(pieces.start[src[keep]] - first, counts)
-    X = pieces.points[idx]
-    Rf = np.repeat(rel[keep, :3, :].reshape(k, 12), counts, axis=0)  # rows of the 3x4 transforms
-    x, y, z = X[:, 0], X[:, 1], X[:, 2]
-    Y = np.empty_like(X)
-    Y[:, 0] = Rf[:, 0] * x + Rf[:, 1] * y + Rf[:, 2] * z + Rf[:, 3]
-    Y[:, 1] = Rf[:, 4] * x + Rf[:, 5] * y + Rf[:, 6] * z + Rf[:, 7]
-    Y[:, 2] = Rf[:, 8] * x + Rf[:, 9] * y + Rf[:, 10] * z + Rf[:, 11]
-    # samples farther than the margin from the target box on some axis are farther
-    # than the margin from the target (the SDF is at least the box distance)
-    q = np.abs(Y - np.repeat(ct[keep], counts, axis=0)) - np.repeat(ht[keep], counts, axis=0)
-    near = np.flatnonzero((q <= np.repeat(m[keep], counts)[:, None]).all(axis=1))
+    # only the sources still in play: a template's samples are drawn all at once from
+    # its own stream, so they do not depend on which of its pieces asked first
+    s = src[keep]
+    pieces.require(s)
+    counts = pieces.count[s]
+    job = np.arange(len(keep)).repeat(counts)  # index into keep of every sample
+    first = counts.cumsum() - counts
+    x, y, z = pieces.points_t.take(np.arange(len(job)) + (pieces.start[s] - first)[job], axis=1)
+    # per sample, as contiguous rows: the 3 x 4 transform to the target frame, the
+    # target's box (centre, half extents) and the margin
+    G = np.concatenate([rel[keep, :3, :].reshape(len(keep), 12), ct[keep], ht[keep], m[keep, None]], axis=1)
+    G = np.ascontiguousarray(G.T).take(job, axis=1)
+    Y = np.empty((3, len(job)))
+    near = np.ones(len(job), dtype=bool)
+    for i in range(3):
+        Y[i] = G[4 * i] * x + G[4 * i + 1] * y + G[4 * i + 2] * z + G[4 * i + 3]
+        # samples farther than the margin from the target box on some axis are farther
+        # than the margin from the target (the SDF is at least the box distance)
+        near &= np.abs(Y[i] - G[12 + i]) - G[15 + i] <= G[18]
+    near = near.nonzero()[0]
+    if len(near) > _RADIAL_CULL:
+        # solids of revolution: samples farther than the margin from the target's
+        # radial extent are farther than the margin from it (see Pieces.radial)
+        rad = pieces.radial[tgt[keep][job[near]]]
+        mn = G[18].take(near) + 1e-9
+        rho = np.hypot(Y[0].take(near), Y[1].take(near))
+        near = near[(rho <= rad[:, 1] + mn) & (rho >= rad[:, 0] - mn)]
     if not len(near):
         return out
-    job = np.repeat(np.arange(k), counts)[near]
-    d = pieces.sdf(tgt[keep][job], Y[near])
+    job = job[near]
+    d = pieces.sdf(tgt[keep][job], Y.take(near, axis=1).T)
     cut = np.concatenate([[0], (job[1:] != job[:-1]).nonzero()[0] + 1])
     out[keep[job[cut]]] = np.minimum.reduceat(d, cut)
     return out
+
+
+#: Near samples above which :func:`evaluate` also culls by the radial extent of
+#: solids of revolution before evaluating SDFs (below, the test costs more than it saves).
+_RADIAL_CULL = 200
 
 
 def refine_distance(pieces: Pieces, a: np.ndarray, b: np.ndarray, Wa: np.ndarray, Wb: np.ndarray,
@@ -302,8 +412,8 @@ def refine_distance(pieces: Pieces, a: np.ndarray, b: np.ndarray, Wa: np.ndarray
     Wt = np.concatenate([Wb, Wa])
     pieces.require(src)
     counts = pieces.count[src]
-    job = np.repeat(np.arange(2 * K), counts)
-    first = np.cumsum(counts) - counts
+    job = np.arange(2 * K).repeat(counts)
+    first = counts.cumsum() - counts
     idx = np.arange(int(counts.sum())) - first[job] + pieces.start[src][job]
     X = _to_world(pieces.points[idx], Ws[job])
     d = _sdf_world(pieces, tgt[job], Wt[job], X)
@@ -314,23 +424,24 @@ def refine_distance(pieces: Pieces, a: np.ndarray, b: np.ndarray, Wa: np.ndarray
     best = np.full(2 * K, np.inf)
     np.minimum.at(best, j, d[pick])
     # each iteration: project onto the target, back onto the source, and bound by the
-    # signed distance of that point to the target. The 7-point stencil of a point on
-    # the target (its SDF and the gradient's) serves both the bound of one iteration
-    # and the projection of the next, and the per-row SDF set-up is done once.
+    # signed distance of that point to the target. Every point is evaluated once with
+    # the 7-point stencils (SDF and the gradient's) of both pieces: at a point on the
+    # target the source's stencil projects it back; at a point on the source the
+    # target's bounds the distance and projects it on, and the source's SDF says how
+    # far off the source surface it lies. The per-row SDF set-up is done once.
     n = len(j)
-    sdf_t = pieces.prepare(np.concatenate([tgt[j], np.repeat(tgt[j], 6)]))
-    sdf_s = pieces.prepare(np.concatenate([src[j], np.repeat(src[j], 6)]))
-    on_s = pieces.prepare(src[j])
+    rt, rs = tgt[j], src[j]
+    both = pieces.prepare(np.concatenate([rt, rt.repeat(6), rs, rs.repeat(6)]))
     Rt, tt = Wt[j][:, :3, :3], Wt[j][:, :3, 3]
     Rs, ts = Ws[j][:, :3, :3], Ws[j][:, :3, 3]
-    Lt, dt = _stencil(sdf_t, Rt, tt, p, n)
+    Lt, _, dt, _ = _stencils(both, Rt, tt, Rs, ts, p, n)
     for _ in range(iters):
         q = _step(Lt, dt, Rt, tt, n)
-        Ls, ds = _stencil(sdf_s, Rs, ts, q, n)
+        _, Ls, _, ds = _stencils(both, Rt, tt, Rs, ts, q, n)
         p = _step(Ls, ds, Rs, ts, n)
-        Lt, dt = _stencil(sdf_t, Rt, tt, p, n)
-        off = np.abs(on_s(np.einsum("nji,nj->ni", Rs, p - ts)))  # p's offset from the source surface
-        on = np.flatnonzero(off <= _ON_SURFACE)
+        Lt, _, dt, ds = _stencils(both, Rt, tt, Rs, ts, p, n)
+        off = np.abs(ds[:n])  # p's offset from the source surface
+        on = (off <= _ON_SURFACE).nonzero()[0]
         before = np.minimum(best[:K], best[K:])
         np.minimum.at(best, j[on], dt[on] + off[on])
         now = np.minimum(best[:K], best[K:])
@@ -346,12 +457,16 @@ _ON_SURFACE = 1e-5
 _OFFS = np.concatenate([np.eye(3), -np.eye(3)]) * _H
 
 
-def _stencil(sdf, R, t, X, n):
-    """World points ``X`` (n, 3) in their pieces' frames (``R``, ``t``: (n, 3, 3), (n, 3))
-    and the SDF at them and at their six central-difference neighbours, (7n,)."""
-    L = np.einsum("nji,nj->ni", R, X - t)
-    Y = np.concatenate([L, (L[:, None, :] + _OFFS[None]).reshape(-1, 3)])
-    return L, sdf(Y)
+def _stencils(sdf, Rt, tt, Rs, ts, X, n):
+    """World points ``X`` (n, 3) in the frames of their target and source pieces
+    (``R*``, ``t*``: (n, 3, 3), (n, 3)), and the SDFs of both pieces at them and at
+    their six central-difference neighbours, (7n,) each (``sdf``: prepared for the
+    target rows seven times, then the source rows seven times)."""
+    Lt = np.einsum("nji,nj->ni", Rt, X - tt)
+    Ls = np.einsum("nji,nj->ni", Rs, X - ts)
+    d = sdf(np.concatenate([Lt, (Lt[:, None, :] + _OFFS[None]).reshape(-1, 3),
+                            Ls, (Ls[:, None, :] + _OFFS[None]).reshape(-1, 3)]))
+    return Lt, Ls, d[:7 * n], d[7 * n:]
 
 
 def _step(L, d, R, t, n):

@@ -15,6 +15,7 @@ from functools import cached_property
 import numpy as np
 
 MOVABLE = ("revolute", "prismatic", "continuous")
+_I4 = np.eye(4)
 
 
 @dataclass
@@ -53,7 +54,7 @@ class Kinematics:
         idx = obj.link_index
         L = len(obj.links)
         parent = np.full(L, -1, dtype=np.int64)
-        origin = np.tile(np.eye(4), (L, 1, 1))
+        origin = np.tile(_I4, (L, 1, 1))
         axis = np.zeros((L, 3))
         limits = np.zeros((L, 2))
         jn, jt = [""] * L, ["fixed"] * L
@@ -78,11 +79,30 @@ class Kinematics:
     def _movable(self) -> np.ndarray:
         return np.array([i for i, t in enumerate(self.joint_types) if t in MOVABLE], dtype=np.int64)
 
+    @cached_property
+    def slides(self) -> np.ndarray:
+        """Boolean (J,): the :meth:`movable` joint is prismatic."""
+        return np.array([self.joint_types[i] == "prismatic" for i in self.movable()], dtype=bool)
+
+    @cached_property
+    def continuous(self) -> np.ndarray:
+        """Boolean (J,): the :meth:`movable` joint is continuous."""
+        return np.array([self.joint_types[i] == "continuous" for i in self.movable()], dtype=bool)
+
+    def world_axes(self, rest: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Axis lines of the :meth:`movable` joints in the object frame at the poses
+        ``rest`` (L, 4, 4): unit directions (J, 3) and points on them (J, 3), metres."""
+        mv = self.movable()
+        R = rest[mv]
+        u = self.axis[mv]
+        a = R[:, :3, 0] * u[:, 0, None] + R[:, :3, 1] * u[:, 1, None] + R[:, :3, 2] * u[:, 2, None]
+        return a, R[:, :3, 3]
+
     def poses(self, q: dict | None = None) -> np.ndarray:
         """Link poses (L, 4, 4) in the object frame; ``q`` maps joint name -> value."""
         q = q or {}
         T = np.empty((self.n_links, 4, 4))
-        T[0] = np.eye(4)
+        T[0] = _I4
         for i in range(1, self.n_links):
             Ti = T[self.parent[i]] @ self.origin[i]
             v = q.get(self.joint_names[i], 0.0)
@@ -133,7 +153,7 @@ class Kinematics:
         J = len(movable)
         if not J:
             return np.zeros(0, dtype=np.int64), np.zeros(0)
-        cont = np.array([self.joint_types[i] == "continuous" for i in movable])
+        cont = self.continuous
         lo = np.where(cont, 0.0, self.limits[movable, 0])
         hi = np.where(cont, 0.0, self.limits[movable, 1])
         k = np.arange(n + 1, dtype=float)
@@ -152,7 +172,7 @@ class Kinematics:
         parent joint; ignored for fixed joints), like :meth:`poses` for each row."""
         S = len(Q)
         T = np.empty((S, self.n_links, 4, 4))
-        T[:, 0] = np.eye(4)
+        T[:, 0] = _I4
         for i in range(1, self.n_links):
             Ti = T[:, self.parent[i]] @ self.origin[i]
             if self.joint_types[i] in MOVABLE and Q[:, i].any():  # q = 0: the identity motion
@@ -201,9 +221,26 @@ def motion(jtype, axis: np.ndarray, q: np.ndarray) -> np.ndarray:
     return T
 
 
+def rotations(a: np.ndarray, q: np.ndarray) -> np.ndarray:
+    """Rotations (K, 3, 3) by angles ``q`` (K,) radians about unit axes ``a`` (K, 3),
+    with the arithmetic of :func:`motion` (Rodrigues: ``cos q I + sin q [a]x + (1 - cos q) a a^T``)."""
+    c, s = np.cos(q), np.sin(q)
+    a4 = np.concatenate([a, np.zeros((len(a), 1))], axis=1)
+    M = (a[:, :, None] * a[:, None, :]) * (1.0 - c)[:, None, None]
+    M += a4[:, _SKEW] * _SKEW_SIGN * s[:, None, None]
+    M[:, _DIAG, _DIAG] += c[:, None]
+    return M
+
+
+#: [a]x as entries of (x, y, z, 0) with signs: the cross-product matrix of a.
+_SKEW = np.array([[3, 2, 1], [2, 3, 0], [1, 0, 3]])
+_SKEW_SIGN = np.array([[0.0, -1.0, 1.0], [1.0, 0.0, -1.0], [-1.0, 1.0, 0.0]])
+_DIAG = np.arange(3)
+
+
 def _motion1(jtype: str, axis: np.ndarray, q: float) -> np.ndarray:
     """One joint motion (4, 4) (scalar fast path of :func:`motion`)."""
-    T = np.eye(4)
+    T = _I4.copy()
     if jtype == "prismatic":
         T[:3, 3] = q * axis
         return T

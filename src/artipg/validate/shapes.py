@@ -14,16 +14,23 @@ mesh of a URDF folder. Every piece carries
 
 A piece's samples depend on the object and the sample stream only, never on which
 pieces were asked for before or together with it: each geometry template has its own
-stream, from which all pieces of that template are drawn together on first use (mesh
-pieces: one stream per piece). Drawing only the requested pieces from one shared
-stream made a check's verdict depend on the order of earlier queries.
+stream, which covers all pieces of that template (mesh pieces: one stream per piece).
+Only the samples of the pieces asked for are computed, but the stream is consumed as
+if all were drawn, so a piece gets the same samples whenever and with whichever others
+it is asked for (drawing only the requested pieces from one shared stream once made a
+check's verdict depend on the order of earlier queries). The draws and arithmetic are
+the templates' own ``sample_components``; only the patch tables are built once per
+piece instead of once per sample.
 """
 
 from __future__ import annotations
 
+from functools import cached_property
+
 import numpy as np
 
 from artipg.geometry.box import Cuboid, RectRing
+from artipg.geometry.patches import sample_family
 from artipg.geometry.revolve import Frustum, Ring, Sphere, Torus
 from artipg.validate.rowsdf import PREPARE, prepare_quad_profiles
 
@@ -54,8 +61,9 @@ class Pieces:
         Name of every part (index = part index).
     part_link : (P,) int64
         Link index of every part.
-    rng : numpy.random.Generator
-        Seeds the surface-sample streams (one number is drawn from it here).
+    rng : numpy.random.Generator or int
+        Seeds the surface-sample streams (one number is drawn from it here; an int is
+        that number, see :func:`stream_seed`).
     meshes : dict, optional
         Piece index -> ``trimesh.Trimesh`` (piece frame) for mesh pieces.
     """
@@ -72,7 +80,7 @@ class Pieces:
         self.part_link = np.asarray(part_link, dtype=np.int64)
         self.meshes = meshes or {}
         # one stream per geometry template (meshes: per piece), children of this seed
-        self._seed = int(rng.integers(2 ** 63))
+        self._seed = stream_seed(rng)
         index: dict = {}
         kind = [index.setdefault(g, len(index)) for g in self.geom]  # kinds in order of appearance
         kinds = list(index)
@@ -93,24 +101,49 @@ class Pieces:
         P3 = self.params[:, :3] if self.params.shape[1] >= 3 else np.zeros((M, 3))
         self.is_ball = of_kind(Sphere) & (P3[:, 1] <= -P3[:, 0]) & (P3[:, 2] >= P3[:, 0])
         self.symmetric = of_kind(Frustum, Sphere) | (of_kind(Ring) & full) | (of_kind(Torus) & arc)
+        self.symmetric_rows = self.symmetric.nonzero()[0]
         self.start = np.zeros(M, dtype=np.int64)
         self.count = np.zeros(M, dtype=np.int64)
         self._drawn = np.zeros(M, dtype=bool)
-        self._chunks: list = []
+        self._chunks: list = []  # (3, n) blocks of samples, in drawing order
         self._size = 0
-        self._points = np.zeros((0, 3))
+        self._points_t = np.zeros((3, 0))
 
     @property
     def n(self) -> int:
         return len(self.link)
 
+    @cached_property
+    def radial(self) -> np.ndarray:
+        """(M, 2): radial extent (min, max distance from the local z axis, metres) of the
+        solids of revolution, ``(-inf, inf)`` for other pieces. The SDF of a solid of
+        revolution is at least the distance of a point's radius to this range."""
+        M = self.n
+        Q = np.zeros((M, 5))
+        Q[:, :min(5, self.params.shape[1])] = self.params[:, :5]
+        kind = [self._kinds[k] for k in self._kind.tolist()]
+        out = np.tile([-np.inf, np.inf], (M, 1))
+        for g, lo, hi in ((Frustum, 0.0, np.maximum(Q[:, 0], Q[:, 1])),
+                          (Ring, np.minimum(Q[:, 1], Q[:, 1] + Q[:, 4]), np.maximum(Q[:, 0], Q[:, 0] + Q[:, 4])),
+                          (Sphere, 0.0, Q[:, 0]), (Torus, Q[:, 0] - Q[:, 1], Q[:, 0] + Q[:, 1])):
+            sel = np.array([k is g for k in kind], dtype=bool)
+            out[sel, 0] = np.broadcast_to(lo, (M,))[sel]
+            out[sel, 1] = hi[sel]
+        return out
+
+    @property
+    def points_t(self) -> np.ndarray:
+        """All surface samples drawn so far as coordinate rows (3, N), piece frames:
+        contiguous rows for the per-sample arithmetic."""
+        if len(self._chunks) > 1 or (self._chunks and self._chunks[0] is not self._points_t):
+            self._points_t = np.concatenate(self._chunks, axis=1)
+            self._chunks = [self._points_t]
+        return self._points_t
+
     @property
     def points(self) -> np.ndarray:
-        """All surface samples drawn so far (N, 3), piece frames."""
-        if len(self._chunks) > 1 or (self._chunks and self._chunks[0] is not self._points):
-            self._points = np.concatenate(self._chunks)
-            self._chunks = [self._points]
-        return self._points
+        """All surface samples drawn so far (N, 3), piece frames (a view of :attr:`points_t`)."""
+        return self.points_t.T
 
     def samples(self, i: int) -> np.ndarray:
         """Surface samples (n, 3) of piece ``i`` in its frame (drawn if needed)."""
@@ -124,26 +157,29 @@ class Pieces:
         once from that template's own stream; mesh pieces one by one, each from its
         own stream. The samples of a piece are thus the same whatever was drawn before.
         """
-        idx = np.unique(np.asarray(idx, dtype=np.int64))
-        idx = idx[~self._drawn[idx]]
-        if not len(idx):
+        need = np.zeros(self.n, dtype=bool)
+        need[np.asarray(idx, dtype=np.int64)] = True
+        need &= ~self._drawn
+        if not need.any():
             return
-        for k in np.unique(self._kind[idx]).tolist():
+        for k in np.bincount(self._kind[need], minlength=len(self._kinds)).nonzero()[0].tolist():
             g = self._kinds[k]
             if g is None:
-                rows = idx[self._kind[idx] == k]
+                rows = (need & (self._kind == k)).nonzero()[0]
                 streams = [self._stream(len(self._kinds) + int(r)) for r in rows]
                 p, owner = _sample_meshes([self.meshes[int(r)] for r in rows], rows, streams)
+                order = np.argsort(owner, kind="stable")
+                p, cnt = p[order], np.bincount(owner, minlength=self.n)[rows]
             else:
-                rows = np.flatnonzero(self._kind == k)
-                P = self.params[rows, :self._nparams[k]]
-                p, owner = _sample_group(g, P, rows, self._stream(k))
-            order = np.argsort(owner, kind="stable")
-            cnt = np.bincount(owner, minlength=self.n)[rows]
-            self.start[rows] = self._size + np.cumsum(cnt) - cnt
+                rows = (self._kind == k).nonzero()[0]
+                want = need[rows]
+                p, cnt = _sample_group(g, self.params[rows, :self._nparams[k]], self._stream(k),
+                                       None if want.all() else want)
+                rows, cnt = rows[want], cnt[want]
+            self.start[rows] = self._size + cnt.cumsum() - cnt
             self.count[rows] = cnt
             self._drawn[rows] = True
-            self._chunks.append(p[order])
+            self._chunks.append(np.ascontiguousarray(p.T))
             self._size += len(p)
 
     def _stream(self, key: int) -> np.random.Generator:
@@ -168,19 +204,21 @@ class Pieces:
         """
         rows = np.asarray(rows, dtype=np.int64)
         kind = self._kind[rows]
-        kinds = np.unique(kind).tolist()
+        if len(self._kinds) == 1:
+            return self._prepare_kind(0, rows)
+        kinds = np.bincount(kind, minlength=len(self._kinds)).nonzero()[0].tolist()
         if len(kinds) == 1:
             return self._prepare_kind(kinds[0], rows)
         groups = []
         kf = self._kinds.index(Frustum) if Frustum in self._kinds else -1
         kr = self._kinds.index(Ring) if Ring in self._kinds else -1
         if kf in kinds and kr in kinds:
-            sf, sr = np.flatnonzero(kind == kf), np.flatnonzero(kind == kr)
+            sf, sr = (kind == kf).nonzero()[0], (kind == kr).nonzero()[0]
             fn = prepare_quad_profiles(self.params[rows[sf], :3], self.params[rows[sr], :5])
             groups.append((np.concatenate([sf, sr]), fn))
             kinds = [k for k in kinds if k not in (kf, kr)]
         for k in kinds:
-            sel = np.flatnonzero(kind == k)
+            sel = (kind == k).nonzero()[0]
             groups.append((sel, self._prepare_kind(k, rows[sel])))
         if len(groups) == 1:
             sel, fn = groups[0]
@@ -206,7 +244,7 @@ class Pieces:
         other templates), one piece at a time."""
         out = np.empty(len(r))
         order = np.argsort(r, kind="stable")
-        cuts = np.flatnonzero(np.diff(r[order])) + 1
+        cuts = np.diff(r[order]).nonzero()[0] + 1
         for chunk in np.split(order, cuts):
             piece = int(r[chunk[0]])
             if g is None:
@@ -229,7 +267,7 @@ class Pieces:
             T = table.prim_T[g.prim]
             if g.geom is RectRing:
                 sizes, offs = _rect_ring_boxes(g.P)
-                Tb = np.repeat(T, 4, axis=0)
+                Tb = T.repeat(4, axis=0)
                 Tb[:, :3, 3] += np.einsum("kij,kj->ki", Tb[:, :3, :3], offs)
                 geom += [Cuboid] * len(sizes)
                 kinds.append(Cuboid)
@@ -260,6 +298,14 @@ class Pieces:
                    [p.name for p in obj.parts], obj.part_link, rng)
 
 
+def stream_seed(rng) -> int:
+    """The seed of an object's surface-sample streams: one number drawn from ``rng``
+    (a :class:`numpy.random.Generator`), or ``rng`` itself when it is an int."""
+    if isinstance(rng, (int, np.integer)):
+        return int(rng)
+    return int(rng.integers(2 ** 63))
+
+
 def _scatter(n: int, sel: np.ndarray, values: np.ndarray) -> np.ndarray:
     out = np.empty(n)
     out[sel] = values
@@ -288,21 +334,104 @@ def _sample_meshes(meshes, rows, streams):
     return np.concatenate(pts), np.concatenate(owner)
 
 
-def _sample_group(geom, P, rows, rng):
-    """Surface samples of pieces ``rows`` of one geometry template (local frames)."""
+def _sample_group(geom, P, rng, want=None):
+    """Surface samples of the pieces ``P`` (M, p) of one geometry template, local frames.
+
+    The same draws and arithmetic as ``geom.sample_components(P[r], comp, rng)`` for
+    every sample's row ``r`` and component ``comp`` in cell order, with the patch
+    tables built once per piece instead of once per sample. With ``want`` (M,) bool,
+    only the samples of those pieces are computed: the stream is consumed as for all
+    pieces (a family sampler's one draw is taken here and handed to it cut down to
+    the wanted samples), so every piece gets the same samples whichever are wanted.
+
+    Returns the points (N, 3), piece by piece in row order (a box's corners and edge
+    points after its surface samples), and the count per piece (M,) (zero for the
+    pieces not wanted).
+    """
     comp_area = geom.component_areas(P)
     n = np.where(comp_area > 0.0,
                  np.clip(np.ceil(comp_area * DENSITY), MIN_PER_COMPONENT, MAX_PER_COMPONENT), 0).astype(np.int64)
     M, C = comp_area.shape
-    cells = np.repeat(np.arange(M * C), n.ravel())
-    r = cells // C
-    p, _ = geom.sample_components(P[r], cells - r * C, rng)
-    owner = rows[r]
-    if geom is Cuboid:  # corners and edge points: where boxes poke into other solids
-        f = _BOX_FEATURES
-        p = np.concatenate([p, (f[None] * P[:, None, :]).reshape(-1, 3)])
-        owner = np.concatenate([owner, np.repeat(rows, len(f))])
-    return p, owner
+    used = n.sum(axis=1).nonzero()[0]  # pieces with samples, in order
+    cells = np.arange(len(used) * C).repeat(n[used].ravel())  # (used piece, component) of each sample
+    comp = cells % C
+    inv = cells // C
+    blocks = geom.patches(P[used])
+    pcomp = np.concatenate([b.comp for b in blocks])
+    patch = np.full(C, -1)
+    patch[pcomp] = np.arange(len(pcomp))
+    if len(set(pcomp.tolist())) == len(pcomp) and (patch[n[used].any(axis=0)] >= 0).all():
+        # one patch per component: :func:`artipg.geometry.base.pick` returns it (every
+        # other weight is zero and u * w < w); its draw is still taken
+        rng.random(len(cells))
+        which = patch[comp]
+    else:  # pick over each sample's component-masked patch areas, cumulated per cell
+        area = np.concatenate([b.area for b in blocks])  # (patches, used)
+        cum = np.cumsum(np.where(pcomp[None, None, :] == np.arange(C)[None, :, None], area.T[:, None, :], 0.0),
+                        axis=2).reshape(len(used) * C, -1)[cells]
+        u = rng.random(len(cells)) * cum[:, -1]
+        which = (u[:, None] >= cum[:, :-1]).sum(axis=1)
+    if want is None:
+        take, pos, rows = None, np.arange(len(cells)), np.arange(M)
+    else:
+        take = want[used][inv]
+        pos = take.cumsum() - 1  # output row of each wanted sample
+        rows = want.nonzero()[0]
+    p = np.empty((len(pos) if take is None else int(take.sum()), 3))
+    end = 0
+    for b in blocks:  # each family sampler draws only when its block has samples
+        start, end = end, end + len(b.comp)
+        sel = ((which >= start) & (which < end)).nonzero()[0] if len(blocks) > 1 else np.arange(len(cells))
+        if not len(sel):
+            continue
+        if take is None:
+            p[sel] = _family(b, which[sel] - start, inv[sel], rng)
+        elif b.family in _REPLAYABLE:  # compute the wanted samples only, from the same draw
+            keep = take[sel]
+            uv = rng.random((2, len(sel)))[:, keep]
+            sel = sel[keep]
+            if len(sel):
+                p[pos[sel]] = _family(b, which[sel] - start, inv[sel], _Drawn(uv))
+        else:
+            keep = take[sel]
+            p[pos[sel[keep]]] = _family(b, which[sel] - start, inv[sel], rng)[keep]
+    per = n.sum(axis=1) if want is None else np.where(want, n.sum(axis=1), 0)
+    if geom is not Cuboid:
+        return p, per
+    # corners and edge points: where boxes poke into other solids; after each box's samples
+    f = len(_BOX_FEATURES)
+    got = per[rows]  # surface samples of each output piece
+    out = np.empty((len(p) + f * len(rows), 3))
+    out[np.arange(len(p)) + f * np.arange(len(rows)).repeat(got)] = p
+    out[(got.cumsum() + f * np.arange(len(rows)))[:, None] + np.arange(f)] = _BOX_FEATURES[None] * P[rows, None, :]
+    per[rows] += f
+    return out, per
+
+
+def _family(b, patch, row, rng) -> np.ndarray:
+    """Points (k, 3) on patches ``patch`` (k,) of block ``b`` of pieces ``row`` (k,)."""
+    c, p, m = b.params.shape
+    q = b.params.transpose(1, 0, 2).reshape(p, c * m).take(patch * m + row, axis=1)  # (p, k) rows
+    return sample_family(b.family, q, rng)[:3].T
+
+
+#: Patch families whose sampler draws exactly ``rng.random((2, k))``, once.
+_REPLAYABLE = frozenset(("rect", "tri", "sector", "band", "zone"))
+
+
+class _Drawn:
+    """Stands in for the generator of a patch sampler whose one draw,
+    ``random((2, k))``, was already taken from the real stream: hands back ``uv``
+    (2, k), the columns of the samples wanted."""
+
+    def __init__(self, uv: np.ndarray):
+        self._uv = uv
+
+    def random(self, size):
+        if self._uv is None or tuple(size) != self._uv.shape:
+            raise RuntimeError("a patch sampler no longer draws random((2, k)) once; update _REPLAYABLE")
+        uv, self._uv = self._uv, None
+        return uv
 
 
 def _rect_ring_boxes(P: np.ndarray):
