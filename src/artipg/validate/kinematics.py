@@ -204,26 +204,14 @@ def motion(jtype, axis: np.ndarray, q: np.ndarray) -> np.ndarray:
     slide = np.broadcast_to(np.asarray(jtype) == "prismatic", (K,))
     T = np.zeros((K, 4, 4))
     T[:, 3, 3] = 1.0
-    x, y, z = axis[:, 0], axis[:, 1], axis[:, 2]
-    a = np.where(slide, 0.0, q)
-    c, s = np.cos(a), np.sin(a)
-    C = 1.0 - c
-    T[:, 0, 0] = c + x * x * C
-    T[:, 0, 1] = x * y * C - z * s
-    T[:, 0, 2] = x * z * C + y * s
-    T[:, 1, 0] = y * x * C + z * s
-    T[:, 1, 1] = c + y * y * C
-    T[:, 1, 2] = y * z * C - x * s
-    T[:, 2, 0] = z * x * C - y * s
-    T[:, 2, 1] = z * y * C + x * s
-    T[:, 2, 2] = c + z * z * C
+    T[:, :3, :3] = rotations(axis, np.where(slide, 0.0, q))
     T[:, :3, 3] = np.where(slide, q, 0.0)[:, None] * axis
     return T
 
 
 def rotations(a: np.ndarray, q: np.ndarray) -> np.ndarray:
-    """Rotations (K, 3, 3) by angles ``q`` (K,) radians about unit axes ``a`` (K, 3),
-    with the arithmetic of :func:`motion` (Rodrigues: ``cos q I + sin q [a]x + (1 - cos q) a a^T``)."""
+    """Rotations (K, 3, 3) by angles ``q`` (K,) radians about unit axes ``a`` (K, 3)
+    (Rodrigues: ``cos q I + sin q [a]x + (1 - cos q) a a^T``)."""
     c, s = np.cos(q), np.sin(q)
     a4 = np.concatenate([a, np.zeros((len(a), 1))], axis=1)
     M = (a[:, :, None] * a[:, None, :]) * (1.0 - c)[:, None, None]
