@@ -30,19 +30,46 @@ def transform_boxes(boxes: np.ndarray, W: np.ndarray) -> np.ndarray:
     R = W[:, :3, :3]
     wc = (R @ c[:, :, None])[:, :, 0] + W[:, :3, 3]
     wh = (np.abs(R) @ h[:, :, None])[:, :, 0]
-    return np.stack([wc - wh, wc + wh], axis=1)
+    out = np.empty((len(boxes), 2, 3))
+    np.subtract(wc, wh, out=out[:, 0])
+    np.add(wc, wh, out=out[:, 1])
+    return out
 
 
-@dataclass
 class _Group:
-    """The primitives of one geometry template (rows in global primitive order)."""
+    """The primitives of one geometry template (rows in global primitive order).
 
-    geom: type
-    P: np.ndarray      # (M, p) parameters
-    T: np.ndarray      # (M, 4, 4) primitive frame in its link frame
-    link: np.ndarray   # (M,) link index
-    part: np.ndarray   # (M,) part index (instance id)
-    prim: np.ndarray   # (M,) global primitive index
+    Attributes
+    ----------
+    geom : type
+        The geometry template.
+    P : (M, p) ndarray
+        Parameters.
+    prim : (M,) int64
+        Global primitive index of each row.
+    T : (M, 4, 4) ndarray
+        Primitive frame in its link frame (read from the table's ``prim_T``).
+    link, part : (M,) int64
+        Link index and part index (instance id).
+    """
+
+    def __init__(self, table: "PrimitiveTable", geom: type, P: np.ndarray, prim: np.ndarray):
+        self._table = table
+        self.geom = geom
+        self.P = P
+        self.prim = prim
+
+    @cached_property
+    def T(self) -> np.ndarray:
+        return self._table.prim_T[self.prim]
+
+    @cached_property
+    def link(self) -> np.ndarray:
+        return self._table.prim_link[self.prim]
+
+    @cached_property
+    def part(self) -> np.ndarray:
+        return self._table.prim_part[self.prim]
 
     @cached_property
     def comp_area(self) -> np.ndarray:
@@ -73,6 +100,7 @@ class PrimitiveTable:
     Attributes
     ----------
     groups : list of _Group
+        One per geometry template, in order of first appearance.
     n_prims : int
     part_semantic : (P,) int64
         Semantic id of every part.
@@ -81,9 +109,9 @@ class PrimitiveTable:
     prim_link, prim_part : (N,) int64
     """
 
-    def __init__(self, groups: list[_Group], prim_T: np.ndarray, prim_link: np.ndarray,
-                 prim_part: np.ndarray, part_semantic: np.ndarray):
-        self.groups = groups
+    def __init__(self, groups: list[tuple[type, np.ndarray, np.ndarray]], prim_T: np.ndarray,
+                 prim_link: np.ndarray, prim_part: np.ndarray, part_semantic: np.ndarray):
+        self.groups = [_Group(self, geom, P, prim) for geom, P, prim in groups]
         self.n_prims = len(prim_T)
         self.prim_T = prim_T
         self.prim_link = prim_link
@@ -92,66 +120,82 @@ class PrimitiveTable:
 
     @classmethod
     def of(cls, obj) -> "PrimitiveTable":
-        by_geom: dict[type, tuple[list, list]] = {}
-        part_poses, prim_poses, prim_part, prim_link, sem = [], [], [], [], []
+        """The table of ``obj``'s primitives (parts in link order, primitives in part order)."""
+        prims, counts, part_poses, part_link, sem = [], [], [], [], []
         for li, link in enumerate(obj.links):
             for part in link.parts:
-                pi = len(part_poses)
                 part_poses.append(part.pose)
+                part_link.append(li)
                 sem.append(label_id(part.semantic))
-                for prim in part.primitives:
-                    rows = by_geom.get(prim.geom)
-                    if rows is None:
-                        rows = by_geom[prim.geom] = ([], [])
-                    rows[0].append(prim.params)
-                    rows[1].append(len(prim_poses))
-                    prim_poses.append(prim.pose)
-                    prim_part.append(pi)
-                    prim_link.append(li)
-        prim_part = np.array(prim_part, dtype=np.int64)
-        prim_link = np.array(prim_link, dtype=np.int64)
-        prim_T = np.array(part_poses)[prim_part] @ np.array(prim_poses)
-        groups = []
-        for geom, (params, idx) in by_geom.items():
-            k = np.array(idx, dtype=np.int64)
-            groups.append(_Group(geom, np.array(params, dtype=float), prim_T[k], prim_link[k], prim_part[k], k))
+                counts.append(len(part.primitives))
+                prims += part.primitives
+        prim_part = np.arange(len(counts)).repeat(counts)
+        prim_link = np.array(part_link, dtype=np.int64).repeat(counts)
+        if not prims:
+            return cls([], np.zeros((0, 4, 4)), prim_link, prim_part, np.array(sem, dtype=np.int64))
+        geoms, params, poses = list(zip(*prims))[:3]
+        prim_T = np.array(part_poses)[prim_part] @ np.array(poses)
+        # rows of each geometry template, templates in order of first appearance
+        first: dict = {}
+        gid = [first.setdefault(g, len(first)) for g in geoms]
+        if len(first) == 1:
+            groups = [(geoms[0], np.array(params, dtype=float), np.arange(len(prims)))]
+        else:
+            rows: list[list[int]] = [[] for _ in first]
+            for i, j in enumerate(gid):
+                rows[j].append(i)
+            groups = [(geoms[r[0]], np.array([params[i] for i in r], dtype=float), np.array(r, dtype=np.int64))
+                      for r in rows]
         return cls(groups, prim_T, prim_link, prim_part, np.array(sem, dtype=np.int64))
 
     # ------------------------------------------------------------ patches
     @cached_property
     def families(self) -> list[_Family]:
         """Non-empty patch families in :data:`FAMILIES` order (cells with area > 0)."""
-        parts: dict[str, list] = {f: [] for f in FAMILIES}
+        found: dict[str, list] = {}
         for g in self.groups:
             for b in g.geom.patches(g.P):
-                c, p, M = b.params.shape
-                prim = g.prim if c == 1 else np.tile(g.prim, c)
-                parts[b.family].append((b.params.transpose(1, 0, 2).reshape(p, c * M), prim, b.area.reshape(c * M)))
+                found.setdefault(b.family, []).append((b, g.prim))
         out = []
         start = 0
-        for name, blocks in parts.items():
-            if not blocks:
+        for name in FAMILIES:
+            blocks = found.get(name)
+            if blocks is None:
                 continue
-            area = np.concatenate([b[2] for b in blocks]) if len(blocks) > 1 else blocks[0][2]
+            params, area, prim = [], [], []
+            for b, gprim in blocks:
+                c, p, M = b.params.shape
+                params.append(b.params.transpose(1, 0, 2).reshape(p, c * M))
+                area.append(b.area.reshape(c * M))
+                cp = np.empty((c, M), dtype=np.int64)
+                cp[:] = gprim
+                prim.append(cp.reshape(c * M))
+            if len(blocks) > 1:
+                params = np.concatenate(params, axis=1)
+                area, prim = np.concatenate(area), np.concatenate(prim)
+            else:
+                params, area, prim = params[0], area[0], prim[0]
             keep = area > 0.0
-            if not keep.any():
+            K = int(np.count_nonzero(keep))
+            if K == 0:
                 continue
-            params = np.concatenate([b[0] for b in blocks], axis=1) if len(blocks) > 1 else blocks[0][0]
-            prim = np.concatenate([b[1] for b in blocks]) if len(blocks) > 1 else blocks[0][1]
-            K = int(keep.sum())
-            out.append(_Family(name, params[:, keep], prim[keep], area[keep], start, start + K))
+            if K < len(keep):
+                params, area, prim = params[:, keep], area[keep], prim[keep]
+            out.append(_Family(name, params, prim, area, start, start + K))
             start += K
         return out
 
     @cached_property
     def cell_areas(self) -> np.ndarray:
         """Area (K,) of every patch cell, m^2, in family order."""
-        return np.concatenate([f.area for f in self.families])
+        fams = self.families
+        return np.concatenate([f.area for f in fams]) if len(fams) != 1 else fams[0].area
 
     @cached_property
     def cell_prim(self) -> np.ndarray:
         """Global primitive index (K,) of every patch cell."""
-        return np.concatenate([f.prim for f in self.families])
+        fams = self.families
+        return np.concatenate([f.prim for f in fams]) if len(fams) != 1 else fams[0].prim
 
     @cached_property
     def cell_p(self) -> np.ndarray:
@@ -169,12 +213,10 @@ class PrimitiveTable:
     # ------------------------------------------------------------ frames and boxes
     def shift_root(self, S: np.ndarray) -> None:
         """Apply object-frame transform ``S`` to every root-link primitive."""
-        for g in self.groups:
-            m = g.link == 0
-            if m.any():
-                g.T[m] = S @ g.T[m]
         m = self.prim_link == 0
         self.prim_T[m] = S @ self.prim_T[m]
+        for g in self.groups:
+            g.__dict__.pop("T", None)
 
     def world_all(self, link_poses: np.ndarray) -> np.ndarray:
         """Poses (M, 3, 4) of all primitives in the object frame, by global index."""
@@ -187,6 +229,8 @@ class PrimitiveTable:
     @cached_property
     def local_boxes(self) -> np.ndarray:
         """Bounding box (N, 2, 3) of every primitive in its own frame, by global index."""
+        if len(self.groups) == 1:
+            return self.groups[0].geom.bounds_batch(self.groups[0].P)
         out = np.empty((self.n_prims, 2, 3))
         for g in self.groups:
             out[g.prim] = g.geom.bounds_batch(g.P)
@@ -200,7 +244,10 @@ class PrimitiveTable:
         """Bounding box (2, 3) of all primitives in the object frame (union of their
         transformed local boxes: exact for boxes, loose for rotated round solids)."""
         b = self.world_boxes(link_poses)
-        return np.stack([b[:, 0].min(axis=0), b[:, 1].max(axis=0)])
+        out = np.empty((2, 3))
+        b[:, 0].min(axis=0, out=out[0])
+        b[:, 1].max(axis=0, out=out[1])
+        return out
 
 
 @dataclass
@@ -257,28 +304,34 @@ def sample_points(obj, n: int = 2048, seed: int = 0, qpos=None, parts=None) -> P
         L = obj.link_poses(qpos)
         cell_p = table.cell_p if parts is None else table.part_cell_p(parts)
         counts = rng.multinomial(n, cell_p)
+        # points in cell order first: the cell of each, and its local point and normal
+        cell = np.repeat(np.arange(len(counts)), counts)
         local = np.empty((6, n))
-        prim = np.empty(n, dtype=np.int64)
+        fams = table.families
+        ends = counts.cumsum()[[f.stop - 1 for f in fams]].tolist()
         s = 0
-        for f in table.families:
-            c = counts[f.start:f.stop]
-            rows = np.repeat(np.arange(len(c)), c)
-            k = len(rows)
-            if k:
-                local[:, s:s + k] = sample_family(f.name, f.params.take(rows, axis=1), rng)
-                prim[s:s + k] = f.prim.take(rows)
-                s += k
+        for f, e in zip(fams, ends):
+            if e > s:
+                rows = cell[s:e] - f.start if f.start else cell[s:e]
+                sample_family(f.name, f.params.take(rows, axis=1), rng, out=local[:, s:e])
+                s = e
         perm = rng.permutation(n)
-        prim = prim.take(perm)
+        prim = table.cell_prim.take(cell.take(perm))
         x, y, z, nx, ny, nz = local.take(perm, axis=1)
-        # one gathered transform in structure-of-arrays layout: rows of the (3, 4) poses
-        G = np.ascontiguousarray(table.world_all(L).reshape(-1, 12).T).take(prim, axis=1)
+        # one gathered transform, three coordinates at a time: G rows 3j..3j+2 hold
+        # column j of every point's (3, 4) pose, so a point is G0 x + G1 y + G2 z + G3
+        # (summed in that order) and a normal G0 nx + G1 ny + G2 nz
+        G = np.ascontiguousarray(table.world_all(L).transpose(2, 1, 0).reshape(12, -1)).take(prim, axis=1)
         pts = np.empty((n, 3))
         nrm = np.empty((n, 3))
-        for i in range(3):
-            r = 4 * i
-            pts[:, i] = G[r] * x + G[r + 1] * y + G[r + 2] * z + G[r + 3]
-            nrm[:, i] = G[r] * nx + G[r + 1] * ny + G[r + 2] * nz
+        acc = G[0:3] * x
+        tmp = G[3:6] * y
+        acc += tmp
+        acc += np.multiply(G[6:9], z, out=tmp)
+        np.add(acc, G[9:12], out=pts.T)
+        np.multiply(G[0:3], nx, out=acc)
+        acc += np.multiply(G[3:6], ny, out=tmp)
+        np.add(acc, np.multiply(G[6:9], nz, out=tmp), out=nrm.T)
         part = table.prim_part.take(prim)
     return PointCloud(
         points=pts,

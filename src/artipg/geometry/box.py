@@ -48,7 +48,8 @@ def _frame_faces() -> np.ndarray:
 
 _FRAME_FACES = _frame_faces()
 _BOX_COMP = np.arange(6)
-
+# face areas sy sz, sx sz, sx sy: products of these parameter columns
+_FACE_I, _FACE_J = np.array([1, 0, 0]), np.array([2, 2, 1])
 
 
 class Cuboid(GeometryTemplate):
@@ -59,9 +60,10 @@ class Cuboid(GeometryTemplate):
 
     @classmethod
     def component_areas(cls, P):
-        sx, sy, sz = P[:, 0], P[:, 1], P[:, 2]
-        a, b, c = sy * sz, sx * sz, sx * sy
-        return np.column_stack([a, a, b, b, c, c])  # faces -x, +x, -y, +y, -z, +z
+        # faces -x, +x, -y, +y, -z, +z: sy sz twice, sx sz twice, sx sy twice
+        out = np.empty((len(P), 3, 2))
+        np.multiply(P.take(_FACE_I, axis=1)[:, :, None], P.take(_FACE_J, axis=1)[:, :, None], out=out)
+        return out.reshape(len(P), 6)
 
     @classmethod
     def area(cls, P):
@@ -86,8 +88,10 @@ class Cuboid(GeometryTemplate):
 
     @classmethod
     def bounds_batch(cls, P):
-        h = P[:, :3] * 0.5
-        return np.stack([-h, h], axis=1)
+        out = np.empty((len(P), 2, 3))
+        np.multiply(P[:, :3], 0.5, out=out[:, 1])
+        np.negative(out[:, 1], out=out[:, 0])
+        return out
 
     @classmethod
     def mesh_arrays(cls, p, sections=32):
@@ -112,10 +116,8 @@ class RectRing(GeometryTemplate):
 
     @classmethod
     def component_areas(cls, P):
-        C, S, N, A0, A1 = _RING_TABLES
-        sizes = np.einsum("kp,prc->krc", P, S)
-        rows = np.arange(16)
-        return sizes[:, rows, A0] * sizes[:, rows, A1]
+        sides = P @ _RING_SIDES  # the two in-plane side lengths of each rectangle
+        return sides[:, :16] * sides[:, 16:]
 
     @classmethod
     def area(cls, P):
@@ -207,6 +209,19 @@ def _ring_tables():
 
 
 _RING_TABLES = _ring_tables()
+
+
+def _ring_sides() -> np.ndarray:
+    """(5, 32): the side lengths along the first, then the second in-plane axis of the 16
+    rectangles, as linear maps of (ox, oy, d, ix, iy). Every coefficient is 0, ±1/2 or 1
+    and each side has at most two non-zero ones, so a side is one exactly rounded sum of
+    exact products whatever order a matrix product adds them in."""
+    C, S, N, A0, A1 = _RING_TABLES
+    rows = np.arange(16)
+    return np.concatenate([S[:, rows, A0], S[:, rows, A1]], axis=1)
+
+
+_RING_SIDES = _ring_sides()
 
 
 def _ring_patch_tables():

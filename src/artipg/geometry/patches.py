@@ -64,11 +64,15 @@ def block(family: str, comp, area, *cols) -> Patch:
     """
     comp = np.asarray(comp, dtype=np.int64).reshape(-1)
     area = np.asarray(area, dtype=float)
-    shape = (len(comp), area.shape[-1])
-    params = np.empty((shape[0], len(cols), shape[1]))
+    c, M = len(comp), area.shape[-1]
+    params = np.empty((c, len(cols), M))
     for j, col in enumerate(cols):
         params[:, j] = col
-    return Patch(family, comp, np.broadcast_to(area, shape), params)
+    if area.shape != (c, M):
+        full = np.empty((c, M))
+        full[...] = area
+        area = full
+    return Patch(family, comp, area, params)
 
 
 def _cross_norm(a, b):
@@ -133,63 +137,93 @@ def linear(family: str, comp, P: np.ndarray, table: np.ndarray, area: np.ndarray
     are the patch areas.
     """
     c, p, _ = table.shape
-    flat = table.reshape(c * p, -1)
-    params = flat[:, :-1] @ P.T + flat[:, -1:]
+    A, b = _split_table(table)
+    params = A @ P.T + b
     return Patch(family, np.asarray(comp, dtype=np.int64), area, params.reshape(c, p, len(P)))
 
 
-# ---------------------------------------------------------------- samplers
-# Each takes the parameters gathered per point, (p, k), and returns (6, k): x y z nx ny nz.
+_SPLIT: dict = {}
 
-def _affine(q, u, v):
+
+def _split_table(table: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The coefficient and constant views of a :func:`compile_linear` table, made once
+    per table (the same views every call, so the matrix product is the same call)."""
+    got = _SPLIT.get(id(table))
+    if got is None or got[0] is not table:
+        flat = table.reshape(table.shape[0] * table.shape[1], -1)
+        got = _SPLIT[id(table)] = (table, flat[:, :-1], flat[:, -1:].copy())
+    return got[1], got[2]
+
+
+# ---------------------------------------------------------------- samplers
+# Each takes the parameters gathered per point, (p, k), and writes (6, k) rows x y z nx ny
+# nz into ``out`` (which it returns).
+
+def _affine(q, u, v, out):
     """Points ``o + u a + v b`` with normal n from rows o a b n of ``q``."""
-    out = np.empty((6, len(u)))
-    out[0:3] = q[0:3] + u * q[3:6] + v * q[6:9]
+    p = out[0:3]
+    np.multiply(u, q[3:6], out=p)
+    np.add(q[0:3], p, out=p)
+    p += v * q[6:9]
     out[3:6] = q[9:12]
     return out
 
 
-def _rect(q, rng):
+def _rect(q, rng, out):
     u, v = rng.random((2, q.shape[1]))
-    return _affine(q, u, v)
+    return _affine(q, u, v, out)
 
 
-def _tri(q, rng):
+def _tri(q, rng, out):
     u, v = rng.random((2, q.shape[1]))
     flip = u + v > 1.0  # reflect the far half of the unit square onto the triangle
-    return _affine(q, np.where(flip, 1.0 - u, u), np.where(flip, 1.0 - v, v))
+    return _affine(q, np.where(flip, 1.0 - u, u), np.where(flip, 1.0 - v, v), out)
 
 
-def _sector(q, rng):
+def _sector(q, rng, out):
     s, t = rng.random((2, q.shape[1]))
     r0, r1, arc = q[12], q[13], q[14]
     rho = np.sqrt(r0 * r0 + s * (r1 * r1 - r0 * r0))
-    phi = t * arc
-    return _affine(q, rho * np.cos(phi), rho * np.sin(phi))
+    uv = np.empty((2, len(s)))
+    phi = np.multiply(t, arc, out=uv[1])
+    np.cos(phi, out=uv[0])
+    np.sin(phi, out=uv[1])
+    uv *= rho
+    return _affine(q, uv[0], uv[1], out)
 
 
-def _band(q, rng):
+def _band(q, rng, out):
     u, t = rng.random((2, q.shape[1]))
     r0, r1, z0, z1, arc, nr, nz = q
     rho = np.sqrt(r0 * r0 + u * (r1 * r1 - r0 * r0))
     # slant fraction (rho - r0) / (r1 - r0), written to stay exact for cylinders
     s = u * (r0 + r1) / (rho + r0 + 1e-300)
-    th = t * arc
-    c, d = np.cos(th), np.sin(th)
-    return np.stack([rho * c, rho * d, z0 + s * (z1 - z0), nr * c, nr * d, nz])
+    cs = out[3:5]  # cos θ, sin θ, scaled in place into the normal below
+    th = np.multiply(t, arc, out=cs[1])
+    np.cos(th, out=cs[0])
+    np.sin(th, out=cs[1])
+    np.multiply(rho, cs, out=out[0:2])
+    out[2] = z0 + s * (z1 - z0)
+    cs *= nr
+    out[5] = nz
+    return out
 
 
-def _zone(q, rng):
+def _zone(q, rng, out):
     u, t = rng.random((2, q.shape[1]))
     R, z0, z1 = q
-    z = z0 + u * (z1 - z0)  # Archimedes: z is uniform on a sphere zone
+    z = np.multiply(u, z1 - z0, out=out[2])
+    z += z0  # Archimedes: z is uniform on a sphere zone
     rho = np.sqrt(np.maximum(R * R - z * z, 0.0))
-    th = t * TWO_PI
-    c, d = np.cos(th), np.sin(th)
-    return np.stack([rho * c, rho * d, z, rho * c / R, rho * d / R, z / R])
+    th = np.multiply(t, TWO_PI, out=out[1])
+    np.cos(th, out=out[0])
+    np.sin(th, out=out[1])
+    out[0:2] *= rho
+    np.divide(out[0:3], R, out=out[3:6])
+    return out
 
 
-def _torus(q, rng):
+def _torus(q, rng, out):
     R, r, arc = q
     k = len(R)
     # tube angle v has density ∝ R + r cos v: rejection, acceptance >= 1/2 since r < R
@@ -204,18 +238,37 @@ def _torus(q, rng):
     th = rng.random(k) * arc
     cv, sv, ct, st = np.cos(v), np.sin(v), np.cos(th), np.sin(th)
     rho = R + r * cv
-    return np.stack([rho * ct, rho * st, r * sv, cv * ct, cv * st, sv])
+    np.multiply(rho, ct, out=out[0])
+    np.multiply(rho, st, out=out[1])
+    np.multiply(r, sv, out=out[2])
+    np.multiply(cv, ct, out=out[3])
+    np.multiply(cv, st, out=out[4])
+    out[5] = sv
+    return out
 
 
 _SAMPLERS = {"rect": _rect, "tri": _tri, "sector": _sector, "band": _band, "zone": _zone, "torus": _torus}
 
 
-def sample_family(family: str, q: np.ndarray, rng: np.random.Generator) -> np.ndarray:
+def sample_family(family: str, q: np.ndarray, rng: np.random.Generator, out: np.ndarray | None = None) -> np.ndarray:
     """One area-uniform point per column of ``q`` (p, k) on patches of ``family``.
+
+    Parameters
+    ----------
+    family : str
+        A key of :data:`FAMILIES`.
+    q : (p, k) ndarray
+        Family parameters of each point's patch, primitive-local frame.
+    rng : numpy.random.Generator
+    out : (6, k) ndarray, optional
+        Where to write the result (rows may be strided views, e.g. columns of a larger
+        array); a new array when None.
 
     Returns
     -------
     (6, k) ndarray
         Rows x, y, z, nx, ny, nz in the primitive's local frame (unit normals).
     """
-    return _SAMPLERS[family](q, rng)
+    if out is None:
+        out = np.empty((6, q.shape[1]))
+    return _SAMPLERS[family](q, rng, out)

@@ -7,11 +7,12 @@ import math
 
 import numpy as np
 
-from artipg.geometry.base import TWO_PI, GeometryTemplate, Primitive, boxes, polygon_sdf
-from artipg.geometry.patches import rects, tris
+from artipg.geometry.base import TWO_PI, GeometryTemplate, Primitive, polygon_sdf
+from artipg.geometry.patches import Patch, _cross_norm
 from artipg.geometry.transforms import IDENTITY
 
 MAX_SIDES = 16
+_SIDE_COMP, _END_COMP = np.array([0, 1, 2]), np.array([3, 4])
 
 
 def _extrusion_sdf(poly: np.ndarray, depth: float, x: np.ndarray) -> np.ndarray:
@@ -58,20 +59,42 @@ class Prism(GeometryTemplate):
     @classmethod
     def patches(cls, P):
         out = []
+        r, h = P[:, 0], P[:, 1]
+        M = len(P)
         # rows are grouped by side count: each n-gon gives n side rects and 2n fan triangles
+        # (written in place: the values of ``rects``/``tris`` of the columns in the comments)
         for n in np.unique(P[:, 2]).astype(int):
             on = (P[:, 2] == n).astype(float)
-            r, h = P[:, 0], P[:, 1]
             a = (np.pi / n + TWO_PI * np.arange(n) / n)[:, None]
             x0, y0 = r * np.cos(a), r * np.sin(a)
             x1, y1 = r * np.cos(a + TWO_PI / n), r * np.sin(a + TWO_PI / n)
             mid = a + np.pi / n
-            out.append(rects(np.zeros(n, dtype=int), (x0, y0, -h / 2), (x1 - x0, y1 - y0, 0.0), (0.0, 0.0, h),
-                             (np.cos(mid), np.sin(mid), 0.0), scale=on))
-            z = np.concatenate([np.broadcast_to(-h / 2, x0.shape), np.broadcast_to(h / 2, x0.shape)])
-            nz = np.repeat([[-1.0], [1.0]], n, axis=0)
-            out.append(tris(np.repeat([1, 2], n), (0.0, 0.0, z), (np.tile(x0, (2, 1)), np.tile(y0, (2, 1)), 0.0),
-                            (np.tile(x1, (2, 1)), np.tile(y1, (2, 1)), 0.0), (0.0, 0.0, nz), scale=on))
+            dx, dy = x1 - x0, y1 - y0
+            # sides: o (x0, y0, -h/2), a (dx, dy, 0), b (0, 0, h), n (cos mid, sin mid, 0)
+            side = np.zeros((n, 12, M))
+            side[:, 0] = x0
+            side[:, 1] = y0
+            side[:, 2] = -h / 2
+            side[:, 3] = dx
+            side[:, 4] = dy
+            side[:, 8] = h
+            side[:, 9] = np.cos(mid)
+            side[:, 10] = np.sin(mid)
+            out.append(Patch("rect", np.zeros(n, dtype=np.int64), _cross_norm((dx, dy, 0.0), (0.0, 0.0, h)) * on,
+                             side))
+            # bottom then top fans: o (0, 0, ∓h/2), a (x0, y0, 0), b (x1, y1, 0), n (0, 0, ∓1)
+            fan = np.zeros((2, n, 12, M))
+            fan[0, :, 2] = -h / 2
+            fan[1, :, 2] = h / 2
+            fan[:, :, 3] = x0
+            fan[:, :, 4] = y0
+            fan[:, :, 6] = x1
+            fan[:, :, 7] = y1
+            fan[0, :, 11] = -1.0
+            fan[1, :, 11] = 1.0
+            area = 0.5 * _cross_norm((x0, y0, 0.0), (x1, y1, 0.0)) * on
+            out.append(Patch("tri", np.repeat(np.array([1, 2]), n), np.concatenate([area, area]),
+                             fan.reshape(2 * n, 12, M)))
         return out
 
     @classmethod
@@ -137,15 +160,38 @@ class TriPrism(GeometryTemplate):
     @classmethod
     def patches(cls, P):
         w, t, a, d = P.T
-        V = cls._verts(P).transpose(1, 2, 0)  # (3 vertices, 2, M)
-        E = np.roll(V, -1, axis=0) - V  # the three edges
+        M = len(P)
+        V = np.empty((3, 2, M))  # the vertices (-w/2, 0), (w/2, 0), (a, t)
+        V[0, 0] = -w / 2
+        V[1, 0] = w / 2
+        V[0:2, 1] = 0.0
+        V[2, 0] = a
+        V[2, 1] = t
+        E = np.empty((3, 2, M))  # the three edges v1 - v0, v2 - v1, v0 - v2
+        np.subtract(V[1:], V[:2], out=E[:2])
+        np.subtract(V[0], V[2], out=E[2])
         L = np.hypot(E[:, 0], E[:, 1])
-        sides = rects((0, 1, 2), (V[:, 0], V[:, 1], -d / 2), (E[:, 0], E[:, 1], 0.0), (0.0, 0.0, d),
-                      (E[:, 1] / L, -E[:, 0] / L, 0.0))
-        zc = np.stack([-d / 2, d / 2])
-        ends = tris((3, 4), (V[0, 0], V[0, 1], zc), (E[0, 0], E[0, 1], 0.0), (-E[2, 0], -E[2, 1], 0.0),
-                    (0.0, 0.0, np.array([[-1.0], [1.0]])))
-        return [sides, ends]
+        # the values of ``rects((0, 1, 2), (V0, V1, -d/2), (E0, E1, 0), (0, 0, d), (E1/L, -E0/L, 0))``
+        side = np.zeros((3, 12, M))
+        side[:, 0:2] = V
+        side[:, 2] = -d / 2
+        side[:, 3:5] = E
+        side[:, 8] = d
+        np.divide(E[:, 1], L, out=side[:, 9])
+        np.divide(-E[:, 0], L, out=side[:, 10])
+        sides = Patch("rect", _SIDE_COMP, _cross_norm((E[:, 0], E[:, 1], 0.0), (0.0, 0.0, d)), side)
+        # and of ``tris((3, 4), (V00, V01, ∓d/2), (E00, E01, 0), (-E20, -E21, 0), (0, 0, ∓1))``
+        end = np.zeros((2, 12, M))
+        end[:, 0:2] = V[0]
+        end[0, 2] = -d / 2
+        end[1, 2] = d / 2
+        end[:, 3:5] = E[0]
+        np.negative(E[2], out=end[0, 6:8])
+        end[1, 6:8] = end[0, 6:8]
+        end[0, 11] = -1.0
+        end[1, 11] = 1.0
+        area = 0.5 * _cross_norm((E[0, 0], E[0, 1], 0.0), (-E[2, 0], -E[2, 1], 0.0))
+        return [sides, Patch("tri", _END_COMP, np.array([area, area]), end)]
 
     @classmethod
     def sdf(cls, p, x):
@@ -159,7 +205,14 @@ class TriPrism(GeometryTemplate):
     @classmethod
     def bounds_batch(cls, P):
         w, t, a, d = P.T
-        return boxes((np.minimum(-w / 2, a), np.minimum(0.0, t), -d / 2), (np.maximum(w / 2, a), np.maximum(0.0, t), d / 2))
+        out = np.empty((len(P), 2, 3))
+        np.minimum(-w / 2, a, out=out[:, 0, 0])
+        np.minimum(0.0, t, out=out[:, 0, 1])
+        out[:, 0, 2] = -d / 2
+        np.maximum(w / 2, a, out=out[:, 1, 0])
+        np.maximum(0.0, t, out=out[:, 1, 1])
+        out[:, 1, 2] = d / 2
+        return out
 
     @classmethod
     def mesh_arrays(cls, p, sections=32):

@@ -12,8 +12,6 @@ import trimesh
 from artipg.geometry.base import (
     TWO_PI,
     convex_hull,
-    boxes,
-    centred_boxes,
     CollisionPiece,
     GeometryTemplate,
     Primitive,
@@ -21,7 +19,7 @@ from artipg.geometry.base import (
     polygon_sdf,
     wedge_sdf,
 )
-from artipg.geometry.patches import bands, compile_linear, linear, rects, sectors, tori, zones
+from artipg.geometry.patches import Patch, compile_linear, linear, rects, sectors
 from artipg.geometry.transforms import IDENTITY, rot_z
 
 FULL = TWO_PI
@@ -32,6 +30,10 @@ _CAP_COMP = (1, 2)
 _WALL_COMP, _INWARD = (0, 1), np.array([[False], [True]])
 _ANNULUS_COMP = (2, 3)
 _END_COMP = (4, 5)
+# the same layouts as index arrays, and constant columns, for the hand-written blocks
+_COMP0, _COMP01, _COMP12 = np.array([0]), np.array([0, 1]), np.array([1, 2])
+_OUT_IN_SIGN = np.array([[1.0], [-1.0]])  # outer wall normals outward, inner inward
+_QUARTERS = np.array([0.5 * np.pi, np.pi, 1.5 * np.pi])
 
 
 def _is_full(arc) -> np.ndarray:
@@ -127,15 +129,36 @@ class Frustum(GeometryTemplate):
 
     @classmethod
     def component_areas(cls, P):
-        r0, r1, h, c0, c1 = P.T
-        return np.column_stack([np.pi * (r0 + r1) * np.hypot(h, r1 - r0), np.pi * c0 * r0 * r0,
-                                np.pi * c1 * r1 * r1])
+        Q = P.T.copy()  # contiguous rows r0 r1 h c0 c1: small 2-D strided operands are slow
+        r0, r1, h = Q[0], Q[1], Q[2]
+        out = np.empty((len(P), 3))
+        np.multiply(np.pi * (r0 + r1), np.hypot(h, r1 - r0), out=out[:, 0])
+        R = Q[0:2]
+        np.multiply(np.pi * Q[3:5] * R, R, out=out[:, 1:].T)  # caps: π c0 r0², π c1 r1²
+        return out
 
     @classmethod
     def patches(cls, P):
-        r0, r1, h = P[:, 0], P[:, 1], P[:, 2]
-        caps = linear("sector", _CAP_COMP, P, _FRUSTUM_CAPS, cls.component_areas(P)[:, 1:].T)
-        return [bands(0, r0, r1, -h / 2, h / 2, TWO_PI), caps]
+        # written out (the same arithmetic as ``bands(0, r0, r1, -h / 2, h / 2, TWO_PI)``
+        # and the compiled caps) because it runs for every object
+        Q = P.T.copy()  # contiguous rows r0 r1 h c0 c1
+        q = np.empty((1, 7, len(P)))
+        band = q[0]  # rows r0 r1 z0 z1 arc nr nz
+        band[0:2] = Q[0:2]
+        np.divide(Q[2], 2, out=band[3])
+        np.negative(band[3], out=band[2])  # -(h / 2) is -h / 2 exactly
+        band[4] = TWO_PI
+        d = band[1:4:2] - band[0:3:2]  # (r1 - r0, z1 - z0)
+        dd = d * d
+        slant = np.sqrt(dd[0] + dd[1])
+        s = 1.0 / np.where(slant > 0, slant, 1.0)
+        np.multiply(s, d[1], out=band[5])
+        np.multiply(-s, d[0], out=band[6])
+        area = np.empty((1, len(P)))
+        np.multiply((TWO_PI * 0.5) * (Q[0] + Q[1]), slant, out=area[0])
+        R = Q[0:2]
+        caps = linear("sector", _COMP12, P, _FRUSTUM_CAPS, np.pi * Q[3:5] * R * R)
+        return [Patch("band", _COMP0, area, q), caps]
 
     @staticmethod
     def _caps(P):
@@ -165,8 +188,13 @@ class Frustum(GeometryTemplate):
 
     @classmethod
     def bounds_batch(cls, P):
-        r = np.maximum(P[:, 0], P[:, 1])
-        return centred_boxes(r, r, P[:, 2] * 0.5)
+        out = np.empty((len(P), 2, 3))
+        hi = out[:, 1]
+        np.maximum(P[:, 0], P[:, 1], out=hi[:, 0])
+        hi[:, 1] = hi[:, 0]
+        np.multiply(P[:, 2], 0.5, out=hi[:, 2])
+        np.negative(hi, out=out[:, 0])
+        return out
 
     @classmethod
     def solid_params(cls, p):
@@ -206,25 +234,54 @@ class Ring(GeometryTemplate):
     def _slant(h, taper):
         return np.hypot(h, taper)
 
+    @staticmethod
+    def _radii(Q):
+        """(2, 2, M): [bottom, top] x [outer, inner] radii of the columns of ``Q`` = P.T."""
+        RR = np.empty((2, 2, Q.shape[1]))
+        RR[0] = Q[0:2]
+        np.add(Q[0:2], Q[4], out=RR[1])
+        return RR
+
     @classmethod
     def component_areas(cls, P):
-        ro, ri, h, arc, tp = P.T
-        sl = np.hypot(h, tp)
-        end = np.where(_is_full(arc), 0.0, (ro - ri) * h)
-        bot = arc / 2 * (ro * ro - ri * ri)
-        top = arc / 2 * ((ro + tp) ** 2 - (ri + tp) ** 2)
+        Q = P.T.copy()  # contiguous rows ro ri h arc tp: small 2-D strided operands are slow
+        ro, ri, h, arc, tp = Q
+        out = np.empty((6, len(P)))
         # outer wall, inner wall, bottom, top, end at θ = 0, end at θ = arc
-        return np.column_stack([arc * (ro + tp / 2) * sl, arc * (ri + tp / 2) * sl, bot, top, end, end])
+        np.multiply(arc * (Q[0:2] + tp / 2), np.hypot(h, tp), out=out[0:2])
+        RR = cls._radii(Q)
+        RR *= RR  # squared radii
+        np.multiply(arc / 2, RR[:, 0] - RR[:, 1], out=out[2:4])
+        out[4] = np.where(_is_full(arc), 0.0, (ro - ri) * h)
+        out[5] = out[4]
+        return out.T.copy()
 
     @classmethod
     def patches(cls, P):
-        ro, ri, h, arc, tp = P.T
+        # the same arithmetic as ``bands(_WALL_COMP, [ro, ri], [ro + tp, ri + tp], -z, z, arc,
+        # inward=_INWARD)`` and the compiled annuli, written out because it runs often
+        Q = P.T.copy()
+        ro, ri, h, arc, tp = Q
         z = h / 2
-        areas = cls.component_areas(P)
-        out = [bands(_WALL_COMP, np.stack([ro, ri]), np.stack([ro + tp, ri + tp]), -z, z, arc, inward=_INWARD),
-               linear("sector", _ANNULUS_COMP, P, _RING_CAPS, areas[:, 2:4].T)]
-        partial = ~_is_full(arc)
-        if partial.any():
+        RR = cls._radii(Q)
+        r0, r1 = RR[0], RR[1]
+        dr = r1 - r0
+        dz = z - -z
+        slant = np.sqrt(dr * dr + dz * dz)
+        s = _OUT_IN_SIGN / np.where(slant > 0, slant, 1.0)
+        q = np.empty((2, 7, len(P)))
+        q[:, 0:2] = RR.transpose(1, 0, 2)
+        q[:, 2] = -z
+        q[:, 3] = z
+        q[:, 4] = arc
+        np.multiply(s, dz, out=q[:, 5])
+        np.multiply(-s, dr, out=q[:, 6])
+        walls = Patch("band", _COMP01, arc * 0.5 * (r0 + r1) * slant, q)
+        RR *= RR  # squared radii
+        annuli = linear("sector", _ANNULUS_COMP, P, _RING_CAPS, arc / 2 * (RR[:, 0] - RR[:, 1]))
+        out = [walls, annuli]
+        if not arc.min() >= TWO_PI - 1e-9:
+            partial = ~_is_full(arc)
             ends = np.stack([np.zeros_like(arc), arc])
             ce, se = np.cos(ends), np.sin(ends)
             sg = np.array([[-1.0], [1.0]])  # the θ = 0 end faces -y, the θ = arc end faces +θ
@@ -258,7 +315,10 @@ class Ring(GeometryTemplate):
     @classmethod
     def bounds_batch(cls, P):
         ro, ri, h, arc, tp = P.T
-        return _arc_bounds_batch(np.minimum(ri, ri + tp), np.maximum(ro, ro + tp), arc, -h / 2, h / 2)
+        r_hi = np.maximum(ro, ro + tp)
+        if arc.min() >= FULL - 1e-9:
+            return _turn_boxes(r_hi, -h / 2, h / 2)
+        return _arc_bounds_batch(np.minimum(ri, ri + tp), r_hi, arc, -h / 2, h / 2)
 
     @classmethod
     def mesh_arrays(cls, p, sections=32):
@@ -286,16 +346,28 @@ class Sphere(GeometryTemplate):
     @classmethod
     def component_areas(cls, P):
         R, lo, hi = P.T
-        return np.column_stack([TWO_PI * R * (hi - lo), np.pi * np.maximum(R * R - lo * lo, 0.0),
-                                np.pi * np.maximum(R * R - hi * hi, 0.0)])
+        out = np.empty((len(P), 3))
+        out[:, 0] = TWO_PI * R * (hi - lo)
+        zc = P[:, 1:3]
+        out[:, 1:] = np.pi * np.maximum((R * R)[:, None] - zc * zc, 0.0)
+        return out
 
     @classmethod
     def patches(cls, P):
+        # ``zones(0, R, lo, hi)`` and ``sectors(_CAP_COMP, (0, 0, [lo, hi]), _X, _Y,
+        # (0, 0, _DOWN_UP), 0, sqrt(R² - z²), TWO_PI)`` written out
         R, lo, hi = P.T
-        zc = np.stack([lo, hi])
-        caps = sectors(_CAP_COMP, (0.0, 0.0, zc), _X, _Y, (0.0, 0.0, _DOWN_UP), 0.0,
-                       np.sqrt(np.maximum(R * R - zc * zc, 0.0)), TWO_PI)
-        return [zones(0, R, lo, hi), caps]
+        zone = Patch("zone", _COMP0, (TWO_PI * R * (hi - lo))[None], P.T[None].copy())
+        zc = P[:, 1:3].T
+        r1 = np.sqrt(np.maximum(R * R - zc * zc, 0.0))
+        q = np.zeros((2, 15, len(P)))
+        q[:, 2] = zc
+        q[:, 3] = 1.0
+        q[:, 7] = 1.0
+        q[:, 11] = _DOWN_UP
+        q[:, 13] = r1
+        q[:, 14] = TWO_PI
+        return [zone, Patch("sector", _COMP12, (0.5 * TWO_PI) * (r1 * r1), q)]
 
     @classmethod
     def sdf(cls, p, x):
@@ -311,8 +383,13 @@ class Sphere(GeometryTemplate):
     @classmethod
     def bounds_batch(cls, P):
         R, lo, hi = P.T
+        out = np.empty((len(P), 2, 3))
         r = np.where((lo <= 0) & (hi >= 0), R, np.sqrt(np.maximum(R * R - np.minimum(lo * lo, hi * hi), 0.0)))
-        return boxes((-r, -r, lo), (r, r, hi))
+        out[:, 1, 0] = r
+        out[:, 1, 1] = r
+        np.negative(out[:, 1, 0:2], out=out[:, 0, 0:2])
+        out[:, :, 2] = P[:, 1:3]
+        return out
 
     @classmethod
     def mesh_arrays(cls, p, sections=32):
@@ -353,21 +430,27 @@ class Torus(GeometryTemplate):
     def component_areas(cls, P):
         R, r, arc, c0, c1 = P.T
         part = ~_is_full(arc)
-        cap = np.pi * r * r
-        return np.column_stack([TWO_PI * r * R * arc, cap * c0 * part, cap * c1 * part])
+        out = np.empty((len(P), 3))
+        out[:, 0] = TWO_PI * r * R * arc
+        out[:, 1:] = (np.pi * r * r)[:, None] * P[:, 3:5] * part[:, None]
+        return out
 
     @classmethod
     def patches(cls, P):
         R, r, arc, c0, c1 = P.T
-        on = ~_is_full(arc) * np.stack([c0, c1])
+        # ``tori(0, R, r, arc)`` written out
+        tube = Patch("torus", _COMP0, (TWO_PI * r * R * arc)[None], P[:, 0:3].T[None].copy())
+        if arc.min() >= TWO_PI - 1e-9:
+            return [tube]
+        on = ~_is_full(arc) * P[:, 3:5].T
         if not on.any():
-            return [tori(0, R, r, arc)]
+            return [tube]
         ends = np.stack([np.zeros_like(arc), arc])
         ce, se = np.cos(ends), np.sin(ends)
         sg = np.array([[-1.0], [1.0]])
         caps = sectors(_CAP_COMP, (R * ce, R * se, 0.0), (ce, se, 0.0), (0.0, 0.0, 1.0),
                        (-se * sg, ce * sg, 0.0), 0.0, r, TWO_PI, scale=on)
-        return [tori(0, R, r, arc), caps]
+        return [tube, caps]
 
     @classmethod
     def sdf(cls, p, x):
@@ -387,6 +470,8 @@ class Torus(GeometryTemplate):
     @classmethod
     def bounds_batch(cls, P):
         R, r, arc = P[:, 0], P[:, 1], P[:, 2]
+        if arc.min() >= FULL - 1e-9:
+            return _turn_boxes(R + r, -r, r)
         return _arc_bounds_batch(R - r, R + r, arc, -r, r)
 
     @classmethod
@@ -422,21 +507,44 @@ def _arc_bounds(r_lo, r_hi, arc, z0, z1):
     return np.array([[xy[:, 0].min(), xy[:, 1].min(), z0], [xy[:, 0].max(), xy[:, 1].max(), z1]])
 
 
+def _turn_boxes(r, z0, z1):
+    """Boxes (M, 2, 3) of full turns of radius ``r`` over z0..z1: a square footprint."""
+    out = np.empty((len(r), 2, 3))
+    out[:, 1, 0] = r
+    out[:, 1, 1] = r
+    np.negative(out[:, 1, 0:2], out=out[:, 0, 0:2])
+    out[:, 0, 2] = z0
+    out[:, 1, 2] = z1
+    return out
+
+
 def _arc_bounds_batch(r_lo, r_hi, arc, z0, z1):
     """Vectorised :func:`_arc_bounds` over rows; returns (M, 2, 3)."""
-    if (arc >= FULL - 1e-9).all():  # full turns (the common case): a square footprint
-        return boxes((-r_hi, -r_hi, z0), (r_hi, r_hi, z1))
+    if arc.min() >= FULL - 1e-9:  # full turns (the common case)
+        return _turn_boxes(r_hi, z0, z1)
+    M = len(arc)
+    out = np.empty((M, 2, 3))
+    out[:, 0, 2] = z0
+    out[:, 1, 2] = z1
     arc = np.minimum(arc, FULL)
-    cand = np.stack([np.zeros_like(arc), arc, np.full_like(arc, 0.5 * np.pi), np.full_like(arc, np.pi),
-                     np.full_like(arc, 1.5 * np.pi)], axis=1)
-    ok = np.ones_like(cand, dtype=bool)
-    ok[:, 2:] = cand[:, 2:] < arc[:, None]
-    c, s = np.cos(cand), np.sin(cand)
-    xs = np.concatenate([c * r_lo[:, None], c * r_hi[:, None]], axis=1)
-    ys = np.concatenate([s * r_lo[:, None], s * r_hi[:, None]], axis=1)
-    ok2 = np.concatenate([ok, ok], axis=1)
-    return boxes((np.where(ok2, xs, np.inf).min(1), np.where(ok2, ys, np.inf).min(1), z0),
-                 (np.where(ok2, xs, -np.inf).max(1), np.where(ok2, ys, -np.inf).max(1), z1))
+    # candidate angles 0, arc and the quarter turns inside the arc
+    cand = np.empty((M, 5))
+    cand[:, 0] = 0.0
+    cand[:, 1] = arc
+    cand[:, 2:] = _QUARTERS
+    cs = np.empty((2, M, 5))  # their cosines and sines
+    np.cos(cand, out=cs[0])
+    np.sin(cand, out=cs[1])
+    # x and y of the candidates at both radii, (2, M, 10): 5 angles at r_lo, 5 at r_hi
+    v = np.empty((2, M, 10))
+    np.multiply(cs, r_lo[:, None], out=v[:, :, :5])
+    np.multiply(cs, r_hi[:, None], out=v[:, :, 5:])
+    ok = np.ones((M, 10), dtype=bool)
+    ok[:, 2:5] = _QUARTERS < arc[:, None]
+    ok[:, 5:] = ok[:, :5]
+    out[:, 0, 0:2] = np.where(ok, v, np.inf).min(2).T
+    out[:, 1, 0:2] = np.where(ok, v, -np.inf).max(2).T
+    return out
 
 
 #: Largest gap (metres) between a curved surface and the flat faces of the convex
