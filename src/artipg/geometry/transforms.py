@@ -42,41 +42,46 @@ def rotation(axis, angle: float, about=None) -> np.ndarray:
     """
     x, y, z = axis
     n = math.sqrt(x * x + y * y + z * z)
-    x, y, z = x / n, y / n, z / n
-    c, s = math.cos(angle), math.sin(angle)
-    C = 1.0 - c
-    T = np.array(
-        [
-            [c + x * x * C, x * y * C - z * s, x * z * C + y * s, 0.0],
-            [y * x * C + z * s, c + y * y * C, y * z * C - x * s, 0.0],
-            [z * x * C - y * s, z * y * C + x * s, c + z * z * C, 0.0],
-            [0.0, 0.0, 0.0, 1.0],
-        ]
-    )
+    T = _unit_rotation(x / n, y / n, z / n, angle)
     if about is not None:
         p = np.asarray(about, dtype=float)
         T[:3, 3] = p - T[:3, :3] @ p
     return T
 
 
+def _unit_rotation(x: float, y: float, z: float, angle: float) -> np.ndarray:
+    """Rotation (4, 4) by ``angle`` radians about the unit axis ``(x, y, z)`` (Rodrigues)."""
+    c, s = math.cos(angle), math.sin(angle)
+    C = 1.0 - c
+    return np.array(  # a flat tuple converts faster than nested lists
+        (
+            c + x * x * C, x * y * C - z * s, x * z * C + y * s, 0.0,
+            y * x * C + z * s, c + y * y * C, y * z * C - x * s, 0.0,
+            z * x * C - y * s, z * y * C + x * s, c + z * z * C, 0.0,
+            0.0, 0.0, 0.0, 1.0,
+        )
+    ).reshape(4, 4)
+
+
+# the unit axes are their own normalisation (x / 1.0 == x): same values as rotation()
 def rot_x(angle: float) -> np.ndarray:
     """Rotation about +X by ``angle`` radians."""
-    return rotation((1.0, 0.0, 0.0), angle)
+    return _unit_rotation(1.0, 0.0, 0.0, angle)
 
 
 def rot_y(angle: float) -> np.ndarray:
     """Rotation about +Y by ``angle`` radians."""
-    return rotation((0.0, 1.0, 0.0), angle)
+    return _unit_rotation(0.0, 1.0, 0.0, angle)
 
 
 def rot_z(angle: float) -> np.ndarray:
     """Rotation about +Z by ``angle`` radians."""
-    return rotation((0.0, 0.0, 1.0), angle)
+    return _unit_rotation(0.0, 0.0, 1.0, angle)
 
 
 def pose(xyz=(0.0, 0.0, 0.0), rot=None) -> np.ndarray:
     """Pose with translation ``xyz`` (3,) and optional rotation ``rot`` ((3, 3) or (4, 4))."""
-    T = np.eye(4)
+    T = _EYE.copy()
     if rot is not None:
         T[:3, :3] = np.asarray(rot, dtype=float)[:3, :3]
     T[0, 3], T[1, 3], T[2, 3] = xyz
@@ -105,7 +110,7 @@ def matrix_to_rpy(T: np.ndarray) -> tuple[float, float, float]:
 
 def invert(T: np.ndarray) -> np.ndarray:
     """Inverse of a rigid transform (4, 4)."""
-    Ti = np.eye(4)
+    Ti = _EYE.copy()
     R = T[:3, :3]
     Ti[:3, :3] = R.T
     Ti[:3, 3] = -R.T @ T[:3, 3]

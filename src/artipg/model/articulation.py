@@ -12,6 +12,7 @@ from artipg.geometry.transforms import IDENTITY
 from artipg.model.part import Part
 
 JOINT_TYPES = ("fixed", "revolute", "prismatic", "continuous")
+_matmul = np.matmul
 
 
 @dataclass(eq=False)
@@ -154,13 +155,16 @@ class ArticulatedObject:
         """Pose (L, 4, 4) of every link in the object frame at joint state ``qpos``."""
         q = self.qpos_dict(qpos)
         idx = self.link_index
-        T = np.empty((len(self.links), 4, 4))
+        links = self.links
+        T = np.empty((len(links), 4, 4))
         T[0] = IDENTITY
-        for i, link in enumerate(self.links[1:], start=1):
-            j = link.joint
-            Tj = T[idx[j.parent]] @ j.origin
-            v = q.get(j.name, 0.0)
-            T[i] = Tj @ j.motion(v) if v else Tj
+        for i in range(1, len(links)):
+            j = links[i].joint
+            v = q.get(j.name, 0.0) if q else 0.0
+            if v:
+                T[i] = (T[idx[j.parent]] @ j.origin) @ j.motion(v)
+            else:
+                _matmul(T[idx[j.parent]], j.origin, out=T[i])
         return T
 
     def part_poses(self, qpos=None) -> np.ndarray:

@@ -47,7 +47,8 @@ class LinkBuilder:
             raise ValueError("the root link has no joint")
         if type not in JOINT_TYPES:
             raise ValueError(f"joint type must be one of {JOINT_TYPES}, got {type!r}")
-        x, y, z = (float(v) for v in axis)
+        x, y, z = axis
+        x, y, z = float(x), float(y), float(z)
         norm = math.sqrt(x * x + y * y + z * z)
         if not norm > 0.0:
             raise ValueError(f"joint {self.name}: axis must be non-zero, got {axis}")

@@ -8,7 +8,7 @@ import numpy as np
 
 from artipg.geometry.base import Primitive
 from artipg.geometry.transforms import IDENTITY
-from artipg.vocabulary import ACTIONABLE_ID, AFFORDANCES, label_id
+from artipg.vocabulary import ACTIONABLE_ID, AFFORDANCES, LABEL_ID, label_id
 
 
 @dataclass(frozen=True)
@@ -38,7 +38,21 @@ class Grasp:
     open_dir: np.ndarray = field(default_factory=lambda: np.zeros(3))
 
 
-@dataclass(eq=False)
+class _Factory:
+    """Default of a field that gets a fresh empty container (shown as in dataclasses)."""
+
+    __slots__ = ()
+
+    def __repr__(self) -> str:
+        return "<factory>"
+
+
+_FACTORY = _Factory()
+_min, _max = np.minimum.reduce, np.maximum.reduce
+_AFFORDANCE_SET = frozenset(AFFORDANCES)
+
+
+@dataclass(eq=False, init=False)
 class Part:
     """One part instance: primitives in its own frame plus knowledge.
 
@@ -86,18 +100,42 @@ class Part:
     pose: np.ndarray = field(default_factory=lambda: IDENTITY)
     param_span: tuple = (0, 0)
 
-    def __post_init__(self):
-        label_id(self.semantic)
-        if self.actionable not in ACTIONABLE_ID:
-            raise ValueError(f"unknown actionable class {self.actionable!r}")
-        for k in self.regions:
-            if k not in AFFORDANCES:
-                raise ValueError(f"unknown affordance {k!r}; choose from {AFFORDANCES}")
+    # hand-written (init=False above): the generated one calls a factory per default and
+    # then __post_init__; parts are made by the dozen per object
+    def __init__(self, semantic: str, template: str, primitives: list[Primitive], anchors: dict = _FACTORY,
+                 regions: dict = _FACTORY, canonical: np.ndarray = IDENTITY, size: np.ndarray | None = None,
+                 grasps: list = _FACTORY, actionable: str = "none", name: str = "",
+                 pose: np.ndarray = IDENTITY, param_span: tuple = (0, 0)):
+        if semantic not in LABEL_ID:
+            label_id(semantic)  # raises, naming the vocabulary
+        if actionable not in ACTIONABLE_ID:
+            raise ValueError(f"unknown actionable class {actionable!r}")
+        if regions is _FACTORY:
+            regions = {}
+        else:
+            for k in regions:
+                if k not in _AFFORDANCE_SET:
+                    raise ValueError(f"unknown affordance {k!r}; choose from {AFFORDANCES}")
+        self.semantic = semantic
+        self.template = template
+        self.primitives = primitives
+        self.anchors = {} if anchors is _FACTORY else anchors
+        self.regions = regions
+        self.canonical = canonical
+        self.size = size
+        self.grasps = [] if grasps is _FACTORY else grasps
+        self.actionable = actionable
+        self.name = name
+        self.pose = pose
+        self.param_span = param_span
 
     def bounds(self) -> np.ndarray:
         """Bounding box (2, 3) of the part in its own frame."""
-        b = np.stack([p.bounds() for p in self.primitives])
-        return np.stack([b[:, 0].min(axis=0), b[:, 1].max(axis=0)])
+        b = np.array([p.bounds() for p in self.primitives])
+        out = np.empty((2, 3))
+        _min(b[:, 0], axis=0, out=out[0])
+        _max(b[:, 1], axis=0, out=out[1])
+        return out
 
     def canonical_size(self) -> np.ndarray:
         """Extents (3,) of the part along its canonical axes."""

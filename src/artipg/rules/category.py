@@ -36,7 +36,9 @@ class SlotContext:
     Attributes
     ----------
     p : ParamRecorder
-        Recorder scoped to the slot name, on the slot's own stream.
+        Recorder scoped to the slot name, on the slot's own stream. It reads the
+        stream ahead in blocks, so the slot draws only through it and its scopes
+        (never through the recorder of another slot, whose stream is closed).
     sub : str
         The object's sub-category.
     out : dict
@@ -134,8 +136,9 @@ class Category:
             builder = ObjectBuilder(record)
             out: dict = {}
             for slot, key in zip(self.order, self._keys):
-                ctx = SlotContext(ParamRecorder(st.open(key), record, overrides, slot.name), sub, out,
-                                  builder, templates, slot.name)
+                # read_ahead: the slot's recorder is the only user of its stream
+                ctx = SlotContext(ParamRecorder(st.open(key), record, overrides, slot.name, read_ahead=True),
+                                  sub, out, builder, templates, slot.name)
                 out[slot.name] = slot.build(ctx)
         obj = builder.build(self.name, sub, seed, record, templates)
         obj.materials = self.materials

@@ -5,6 +5,13 @@ the parents, so an object's structural parameters can be exported and a repair s
 can regenerate it with ``overrides`` (clamped to the then-valid range). The random
 number is always drawn, even when overridden, so overriding one parameter never
 shifts the stream of the others.
+
+Every draw takes exactly one double from the stream (``Generator.random()``). A
+recorder made with ``read_ahead=True`` takes those doubles in blocks
+(``Generator.random(k)`` yields the same values as ``k`` scalar calls), which is what
+:meth:`artipg.rules.Category.generate` does for its per-slot streams; reading
+:attr:`ParamRecorder.rng` rewinds the generator over the doubles read ahead, so the
+generator it returns is exactly where the draws so far left it.
 """
 
 from __future__ import annotations
@@ -15,16 +22,41 @@ from typing import Any
 import numpy as np
 
 
-@dataclass
+@dataclass(init=False, slots=True)
 class Param:
-    """A recorded parameter: ``kind`` is uniform, integer, choice, flag or fixed."""
+    """A recorded parameter: ``kind`` is uniform, integer, choice, flag or fixed.
+
+    Attributes
+    ----------
+    name : str
+        Full (scoped) name, the key of the record.
+    kind : str
+        ``uniform``, ``integer``, ``choice``, ``flag`` or ``fixed``.
+    value : float, int, str or bool
+        The value used (a choice records the option's name).
+    lo, hi : float or int or None
+        Valid range at draw time (uniform and integer).
+    options : tuple
+        Option names of a choice, ``(False, True)`` for a flag.
+    """
 
     name: str
     kind: str
     value: Any
-    lo: Any = None
-    hi: Any = None
-    options: tuple = ()
+    lo: Any
+    hi: Any
+    options: tuple
+
+    # hand-written: about a third cheaper than the generated __init__ and recorders
+    # make one per draw
+    def __init__(self, name: str, kind: str, value: Any, lo: Any = None, hi: Any = None,
+                 options: tuple = ()):
+        self.name = name
+        self.kind = kind
+        self.value = value
+        self.lo = lo
+        self.hi = hi
+        self.options = options
 
     def to_json(self) -> dict:
         d = {"kind": self.kind, "value": self.value}
@@ -59,40 +91,116 @@ def _options(options):
     return out
 
 
+#: Bit generators whose ``advance`` counts one step per double, so doubles read ahead
+#: can be given back by advancing the period minus their number.
+_REWINDABLE = {np.random.PCG64: 1 << 128, np.random.PCG64DXSM: 1 << 128}
+_FIRST_BLOCK = 16  # a slot's stream gives 10 draws on average, 1 to 50+
+_MAX_BLOCK = 256
+
+
+class _Draws:
+    """The uniform doubles of one generator, optionally read ahead in blocks.
+
+    ``buf`` holds the doubles read ahead but not used yet, last to be used first; it is
+    shared (the same list object) by every recorder of the stream.
+    """
+
+    __slots__ = ("gen", "buf", "block", "period")
+
+    def __init__(self, gen: np.random.Generator, read_ahead: bool):
+        self.gen = gen
+        self.buf: list[float] = []
+        bitgen = getattr(gen, "bit_generator", None)
+        self.period = _REWINDABLE.get(type(bitgen)) if read_ahead else None
+        self.block = _FIRST_BLOCK if self.period else 1
+
+    def refill(self) -> float:
+        """The next double when ``buf`` is empty; reads the next block into ``buf``."""
+        n = self.block
+        if n == 1:
+            return self.gen.random()
+        block = self.gen.random(n).tolist()
+        block.reverse()
+        buf = self.buf
+        buf += block
+        if n < _MAX_BLOCK:
+            self.block = 2 * n
+        return buf.pop()
+
+    def sync(self) -> np.random.Generator:
+        """The generator, rewound over the doubles read ahead (which are dropped)."""
+        n = len(self.buf)
+        if n:
+            bitgen = self.gen.bit_generator
+            state = bitgen.state
+            bitgen.advance(self.period - n)  # also clears the cached 32-bit half: restore it
+            if state["has_uint32"]:
+                rewound = bitgen.state
+                rewound["has_uint32"], rewound["uinteger"] = state["has_uint32"], state["uinteger"]
+                bitgen.state = rewound
+            self.buf.clear()
+        return self.gen
+
+
+_new = object.__new__
+
+
 class ParamRecorder:
     """Draws named parameters from one ``Generator`` and records them.
 
     Parameters
     ----------
     rng : numpy.random.Generator
-        The only source of randomness.
+        The only source of randomness; each draw takes one ``rng.random()`` double.
     record : dict, optional
         Shared name -> :class:`Param` store.
     overrides : dict, optional
         name -> value; clamped to the valid range at draw time.
     prefix : str
         Prepended (with a dot) to every name.
+    read_ahead : bool
+        Take the doubles from ``rng`` in blocks (same values, fewer calls). The
+        generator then runs ahead of the draws until :attr:`rng` is read, so use it
+        only when the recorder (and its scopes) is the generator's only user. Applies
+        to PCG64 and PCG64DXSM generators; others are read one double at a time.
     """
 
-    __slots__ = ("rng", "record", "overrides", "prefix")
+    __slots__ = ("_draws", "_buf", "record", "overrides", "prefix")
 
     def __init__(self, rng: np.random.Generator, record: dict | None = None,
-                 overrides: dict | None = None, prefix: str = ""):
-        self.rng = rng
+                 overrides: dict | None = None, prefix: str = "", *, read_ahead: bool = False):
+        self._draws = _Draws(rng, read_ahead)
+        self._buf = self._draws.buf
         self.record = {} if record is None else record
         self.overrides = overrides or {}
         self.prefix = prefix
 
+    @property
+    def rng(self) -> np.random.Generator:
+        """The generator, positioned right after the doubles drawn so far."""
+        return self._draws.sync()
+
+    @rng.setter
+    def rng(self, gen: np.random.Generator) -> None:
+        self._draws = _Draws(gen, False)
+        self._buf = self._draws.buf
+
     def scope(self, name: str) -> "ParamRecorder":
         """A recorder sharing stream and record, whose names are prefixed by ``name``."""
-        return ParamRecorder(self.rng, self.record, self.overrides, self._key(name))
+        s = _new(ParamRecorder)
+        s._draws = self._draws
+        s._buf = self._buf
+        s.record = self.record
+        s.overrides = self.overrides
+        s.prefix = self._key(name)
+        return s
 
     def _key(self, name: str) -> str:
         return f"{self.prefix}.{name}" if self.prefix else name
 
     def uniform(self, name: str, lo: float, hi: float, fixed: float | None = None) -> float:
         """Uniform value in [lo, hi]; ``fixed`` (set by a parent) is recorded instead."""
-        key = self._key(name)
+        key = f"{self.prefix}.{name}" if self.prefix else name
         if fixed is not None:
             v = float(fixed)
             self.record[key] = Param(key, "fixed", v)
@@ -100,26 +208,30 @@ class ParamRecorder:
         lo, hi = float(lo), float(hi)
         if hi < lo:
             raise ValueError(f"parameter {key}: empty range [{lo}, {hi}]")
-        v = lo + (hi - lo) * self.rng.random()
-        o = self.overrides.get(key)
-        if o is not None:
-            v = min(hi, max(lo, float(o)))
+        buf = self._buf
+        v = lo + (hi - lo) * (buf.pop() if buf else self._draws.refill())
+        if self.overrides:
+            o = self.overrides.get(key)
+            if o is not None:
+                v = min(hi, max(lo, float(o)))
         self.record[key] = Param(key, "uniform", v, lo, hi)
         return v
 
     def integers(self, name: str, lo: int, hi: int, fixed: int | None = None) -> int:
         """Uniform integer in [lo, hi] (both inclusive)."""
-        key = self._key(name)
+        key = f"{self.prefix}.{name}" if self.prefix else name
         if fixed is not None:
             self.record[key] = Param(key, "fixed", int(fixed))
             return int(fixed)
         lo, hi = int(lo), int(hi)
         if hi < lo:
             raise ValueError(f"parameter {key}: empty range [{lo}, {hi}]")
-        v = lo + int(self.rng.random() * (hi - lo + 1))
-        o = self.overrides.get(key)
-        if o is not None:
-            v = min(hi, max(lo, int(round(o))))
+        buf = self._buf
+        v = lo + int((buf.pop() if buf else self._draws.refill()) * (hi - lo + 1))
+        if self.overrides:
+            o = self.overrides.get(key)
+            if o is not None:
+                v = min(hi, max(lo, int(round(o))))
         self.record[key] = Param(key, "integer", v, lo, hi)
         return v
 
@@ -129,32 +241,37 @@ class ParamRecorder:
         ``options`` is a dict {option: weight} or a sequence (equal weights). Options
         may be strings or functions (part templates); an override names the option.
         """
-        key = self._key(name)
+        key = f"{self.prefix}.{name}" if self.prefix else name
         opts, w, names, total = _options(options)
         if fixed is not None:
             self.record[key] = Param(key, "fixed", option_name(fixed))
             return fixed
-        u = self.rng.random() * total
+        buf = self._buf
+        u = (buf.pop() if buf else self._draws.refill()) * total
         i = 0
         acc = w[0]
-        while u >= acc and i < len(w) - 1:
+        last = len(w) - 1
+        while u >= acc and i < last:
             i += 1
             acc += w[i]
-        o = self.overrides.get(key)
-        if o is not None and option_name(o) in names:
-            i = names.index(option_name(o))
-        self.record[key] = Param(key, "choice", names[i], options=names)
+        if self.overrides:
+            o = self.overrides.get(key)
+            if o is not None and option_name(o) in names:
+                i = names.index(option_name(o))
+        self.record[key] = Param(key, "choice", names[i], None, None, names)
         return opts[i]
 
     def flag(self, name: str, p: float, fixed: bool | None = None) -> bool:
         """True with probability ``p``."""
-        key = self._key(name)
+        key = f"{self.prefix}.{name}" if self.prefix else name
         if fixed is not None:
             self.record[key] = Param(key, "fixed", bool(fixed))
             return bool(fixed)
-        v = self.rng.random() < p
-        o = self.overrides.get(key)
-        if o is not None:
-            v = bool(o)
-        self.record[key] = Param(key, "flag", bool(v), options=(False, True))
+        buf = self._buf
+        v = (buf.pop() if buf else self._draws.refill()) < p
+        if self.overrides:
+            o = self.overrides.get(key)
+            if o is not None:
+                v = bool(o)
+        self.record[key] = Param(key, "flag", bool(v), None, None, (False, True))
         return bool(v)

@@ -5,8 +5,9 @@ which costs about 30 µs: a third of a millisecond for an object with ten slots.
 the seed is hashed once with SplitMix64 into a 128-bit PCG64 state and an odd 128-bit
 increment, written straight into a bit generator borrowed from a per-thread pool, and
 stream ``key`` (a 32-bit integer) starts ``key * 2**64`` draws further along that
-sequence (PCG64 jumps ahead in O(log n)): streams never overlap within 2**64 draws,
-opening one costs about 4 µs, and each depends only on (seed, key), never on the order
+sequence (PCG64 jumps ahead in O(log n); the jump's two constants are computed once per
+key and the jumped state written directly): streams never overlap within 2**64 draws,
+opening one costs about 2 µs, and each depends only on (seed, key), never on the order
 in which streams are opened.
 """
 
@@ -14,7 +15,6 @@ from __future__ import annotations
 
 import threading
 import zlib
-from contextlib import contextmanager
 
 import numpy as np
 
@@ -38,15 +38,57 @@ def stream_key(name: str) -> int:
 def pcg_state(seed: int) -> dict:
     """The PCG64 state (numpy's ``bit_generator.state`` dict) that starts the streams
     of object ``seed`` (a non-negative int below 2**128)."""
-    words = [_splitmix64(_splitmix64(seed & _MASK) ^ ((seed >> 64) & _MASK))]
-    for _ in range(3):
-        words.append(_splitmix64(words[-1]))
+    state, inc = _pcg_words(seed)
+    return _state_dict(state, inc)
+
+
+def _pcg_words(seed: int) -> tuple[int, int]:
+    """(state, odd increment) of :func:`pcg_state`, as 128-bit ints."""
+    w0 = _splitmix64(_splitmix64(seed & _MASK) ^ ((seed >> 64) & _MASK))
+    w1 = _splitmix64(w0)
+    w2 = _splitmix64(w1)
+    w3 = _splitmix64(w2)
+    return (w0 << 64) | w1, ((w2 << 64) | w3) | 1
+
+
+def _state_dict(state: int, inc: int) -> dict:
     return {
         "bit_generator": "PCG64",
-        "state": {"state": (words[0] << 64) | words[1], "inc": ((words[2] << 64) | words[3]) | 1},
+        "state": {"state": state, "inc": inc},
         "has_uint32": 0,
         "uinteger": 0,
     }
+
+
+# numpy's PCG64 steps its 128-bit state as state * _MULT + inc (mod 2**128), one step
+# per 64-bit draw; n steps compose to state * A(n) + inc * S(n) with A and S
+# independent of the state and the increment (pcg_advance_lcg_128, Brown 1994).
+_MULT = (2549297995355413924 << 64) | 4865540595714422341
+_MASK128 = (1 << 128) - 1
+_JUMPS: dict[int, tuple[int, int]] = {}
+
+
+def _jump(n: int) -> tuple[int, int]:
+    """(A(n), S(n)): ``n`` PCG64 steps map state s to ``s * A + inc * S`` mod 2**128."""
+    acc_mult, acc_plus, cur_mult, cur_plus = 1, 0, _MULT, 1
+    while n:
+        if n & 1:
+            acc_mult = (acc_mult * cur_mult) & _MASK128
+            acc_plus = (acc_plus * cur_mult + cur_plus) & _MASK128
+        cur_plus = ((cur_mult + 1) * cur_plus) & _MASK128
+        cur_mult = (cur_mult * cur_mult) & _MASK128
+        n >>= 1
+    return acc_mult, acc_plus
+
+
+def _stream_jump(key: int) -> tuple[int, int]:
+    """:func:`_jump` to the start of stream ``key`` (``key * 2**64`` steps), cached."""
+    hit = _JUMPS.get(key)
+    if hit is None:
+        hit = _jump(key << 64)
+        if len(_JUMPS) < 4096:  # stream keys are slot names: a few hundred at most
+            _JUMPS[key] = hit
+    return hit
 
 
 class Streams:
@@ -58,30 +100,44 @@ class Streams:
 
     def __init__(self, seed: int, bitgen: np.random.PCG64):
         self.seed = int(seed)
-        self._state = pcg_state(self.seed)
+        self._words = _pcg_words(self.seed)
         self._bitgen = bitgen
         self._gen = np.random.Generator(bitgen)
 
     def open(self, key: int) -> np.random.Generator:
         """The generator positioned at the start of stream ``key`` (0 <= key < 2**32)."""
-        self._bitgen.state = self._state
-        if key:
-            self._bitgen.advance(key << 64)
+        state, inc = self._words
+        if key:  # what bitgen.advance(key << 64) does, without its call overhead
+            a, b = _stream_jump(key)
+            state = (state * a + inc * b) & _MASK128
+        self._bitgen.state = _state_dict(state, inc)
         return self._gen
 
 
-@contextmanager
-def streams(seed: int):
+class streams:
     """Borrow a bit generator from this thread's pool for the streams of ``seed``.
 
-    Nested use (an object generated while another is being generated) borrows a
-    second generator, so the two never share state.
+    A context manager: ``with streams(seed) as s`` gives a :class:`Streams`. Nested use
+    (an object generated while another is being generated) borrows a second
+    generator, so the two never share state.
     """
-    pool = getattr(_POOL, "free", None)
-    if pool is None:
-        pool = _POOL.free = []
-    bitgen = pool.pop() if pool else np.random.PCG64(0)
-    try:
-        yield Streams(seed, bitgen)
-    finally:
-        pool.append(bitgen)
+
+    __slots__ = ("seed", "_pool", "_bitgen")
+
+    def __init__(self, seed: int):
+        self.seed = seed
+
+    def __enter__(self) -> Streams:
+        pool = getattr(_POOL, "free", None)
+        if pool is None:
+            pool = _POOL.free = []
+        self._pool = pool
+        self._bitgen = pool.pop() if pool else np.random.PCG64(0)
+        try:
+            return Streams(self.seed, self._bitgen)
+        except BaseException:
+            pool.append(self._bitgen)
+            raise
+
+    def __exit__(self, *exc) -> None:
+        self._pool.append(self._bitgen)

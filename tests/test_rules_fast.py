@@ -1,0 +1,263 @@
+"""Fast paths of the rule framework against the plain computations they replace.
+
+Each test computes the same thing the straightforward way (scalar ``Generator.random()``
+calls, ``bit_generator.advance``, the nested-array rotation formula, ...) and asks for
+bit-identical results.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+import pickle
+
+import numpy as np
+import pytest
+
+import artipg
+import artipg.rules.category as category_module
+from artipg.geometry import cuboid
+from artipg.geometry.transforms import IDENTITY, rot_x, rot_y, rot_z, rotation, translation
+from artipg.model import ObjectBuilder, Part
+from artipg.rules import Param, ParamRecorder
+from artipg.rules.streams import Streams, pcg_state, stream_key, streams
+
+BITGENS = [np.random.PCG64, np.random.PCG64DXSM, np.random.MT19937, np.random.Philox]
+
+
+def _same_state(a, b) -> bool:
+    """Equality of two ``bit_generator.state`` values (dicts that may hold arrays)."""
+    if isinstance(a, dict):
+        return isinstance(b, dict) and a.keys() == b.keys() and all(_same_state(a[k], b[k]) for k in a)
+    if isinstance(a, np.ndarray):
+        return isinstance(b, np.ndarray) and np.array_equal(a, b)
+    return a == b
+
+
+@pytest.mark.parametrize("bitgen", BITGENS)
+def test_read_ahead_draws_are_the_scalar_draws(bitgen):
+    rec = ParamRecorder(np.random.Generator(bitgen(5)), read_ahead=True)
+    ref = np.random.Generator(bitgen(5))
+    got = [rec.uniform(f"u{i}", 0.0, 1.0) for i in range(1000)]  # lo + 1.0 * u == u
+    assert got == [ref.random() for _ in range(1000)]
+
+
+@pytest.mark.parametrize("bitgen", BITGENS)
+@pytest.mark.parametrize("k", [0, 1, 15, 16, 17, 47, 48, 49, 300])
+def test_rng_is_rewound_to_just_after_the_draws(bitgen, k):
+    gen = np.random.Generator(bitgen(11))
+    gen.integers(0, 2**32, dtype=np.uint32)  # leaves half a 64-bit word cached
+    rec = ParamRecorder(gen, read_ahead=True)
+    ref = np.random.Generator(bitgen(11))
+    ref.integers(0, 2**32, dtype=np.uint32)
+    for i in range(k):
+        assert rec.uniform(f"u{i}", 0.0, 1.0) == ref.random()
+    assert _same_state(rec.rng.bit_generator.state, ref.bit_generator.state)
+    assert rec.rng.integers(0, 2**32, dtype=np.uint32) == ref.integers(0, 2**32, dtype=np.uint32)
+    assert rec.uniform("after", 0.0, 1.0) == ref.random()  # and the recorder goes on from there
+
+
+def _script(rec: ParamRecorder, rng: np.random.Generator) -> list:
+    """A mixed sequence of draws through ``rec``; ``rng`` (separate) picks the calls."""
+    out = []
+    scopes = [rec, rec.scope("a"), rec.scope("a").scope("b"), rec.scope("c")]
+    for i in range(400):
+        p = scopes[int(rng.integers(len(scopes)))]
+        op = int(rng.integers(6))
+        name = f"x{i}"
+        if op == 0:
+            lo = float(rng.uniform(-1, 1))
+            out.append(p.uniform(name, lo, lo + float(rng.uniform(0, 2))))
+        elif op == 1:
+            out.append(p.integers(name, -3, int(rng.integers(-3, 9))))
+        elif op == 2:
+            out.append(p.choice(name, {"s": 1.0, "t": 2.5, "u": 0.5}))
+        elif op == 3:
+            out.append(p.choice(name, ("q", "r")))
+        elif op == 4:
+            out.append(p.flag(name, float(rng.random())))
+        else:
+            out.append(p.uniform(name, 0.0, 1.0, fixed=float(rng.random())))
+    return out
+
+
+@pytest.mark.parametrize("overrides", [None, "some"])
+def test_read_ahead_recorder_records_what_the_plain_one_does(overrides):
+    if overrides:  # override a few names of every kind, some out of range
+        overrides = {"x3": 9.0, "a.x10": -4, "a.b.x20": "t", "c.x33": False, "x41": 0.5, "a.x50": "nope"}
+    plain = ParamRecorder(np.random.default_rng(9), overrides=overrides)
+    fast = ParamRecorder(np.random.default_rng(9), overrides=overrides, read_ahead=True)
+    assert _script(fast, np.random.default_rng(1)) == _script(plain, np.random.default_rng(1))
+    assert list(fast.record) == list(plain.record)
+    assert list(fast.record.values()) == list(plain.record.values())
+    assert _same_state(fast.rng.bit_generator.state, plain.rng.bit_generator.state)
+
+
+def test_generate_matches_plain_recorders(monkeypatch):
+    def objects():
+        return {(c, s): artipg.generate(c, s) for c in artipg.categories() for s in range(3)}
+
+    fast = objects()
+    plain_recorder = ParamRecorder
+
+    def no_read_ahead(*args, read_ahead=False, **kw):
+        return plain_recorder(*args, **kw)
+
+    monkeypatch.setattr(category_module, "ParamRecorder", no_read_ahead)
+    plain = objects()
+    for key, obj in plain.items():
+        assert list(fast[key].params.values()) == list(obj.params.values()), key
+        assert [p.param_span for p in fast[key].parts] == [p.param_span for p in obj.parts], key
+
+
+def test_param_keeps_its_dataclass_api():
+    p = Param("a.w", "uniform", 0.25, 0.1, 0.4)
+    assert p == Param("a.w", "uniform", 0.25, 0.1, 0.4) and p != Param("a.w", "uniform", 0.26, 0.1, 0.4)
+    assert (p.lo, p.hi, p.options) == (0.1, 0.4, ())
+    assert repr(p) == "Param(name='a.w', kind='uniform', value=0.25, lo=0.1, hi=0.4, options=())"
+    assert [f.name for f in dataclasses.fields(Param)] == ["name", "kind", "value", "lo", "hi", "options"]
+    assert p.to_json() == {"kind": "uniform", "value": 0.25, "range": [0.1, 0.4]}
+    c = Param("c", "choice", "x", options=("x", "y"))
+    assert c.to_json() == {"kind": "choice", "value": "x", "options": ["x", "y"]}
+    assert pickle.loads(pickle.dumps(c)) == c
+    p.value = 0.3
+    assert p.value == 0.3
+
+
+@pytest.mark.parametrize("seed", [0, 1, 12345, 2**64 + 7, 2**127 + 99])
+def test_stream_open_is_the_advanced_state(seed):
+    bitgen = np.random.PCG64(0)
+    st = Streams(seed, bitgen)
+    for key in [0, 1, 2, stream_key("door"), stream_key("racks"), 2**32 - 1]:
+        gen = st.open(key)
+        ref = np.random.PCG64(0)
+        ref.state = pcg_state(seed)
+        ref.advance(key << 64)
+        assert bitgen.state == ref.state
+        assert gen.random(5).tolist() == np.random.Generator(ref).random(5).tolist()
+
+
+def test_streams_lend_distinct_generators_and_take_them_back():
+    with streams(1) as a:
+        with streams(2) as b:
+            assert a._bitgen is not b._bitgen
+        x = a.open(7).random()
+    with streams(1) as c:
+        assert c.open(7).random() == x
+    with pytest.raises(RuntimeError):
+        with streams(3) as d:
+            lent = d._bitgen
+            raise RuntimeError
+    with streams(4) as e:  # given back despite the exception
+        assert e._bitgen is lent
+
+
+def test_part_init_defaults_validation_and_replace():
+    prim = [cuboid(0.1, 0.2, 0.3)]
+    a, b = Part("door", "slab", prim), Part("door", "slab", prim)
+    assert a.anchors == {} and a.regions == {} and a.grasps == [] and a.size is None
+    assert a.anchors is not b.anchors and a.regions is not b.regions and a.grasps is not b.grasps
+    assert a.canonical is IDENTITY and a.pose is IDENTITY and a.param_span == (0, 0)
+    assert (a.actionable, a.name) == ("none", "")
+    with pytest.raises(KeyError, match="vocabulary"):
+        Part("no_such_label", "x", prim)
+    with pytest.raises(ValueError, match="actionable"):
+        Part("door", "x", prim, actionable="no_such_class")
+    with pytest.raises(ValueError, match="affordance"):
+        Part("door", "x", prim, regions={"no_such_affordance": None})
+    c = Part("handle", "bar", prim, anchors={"h": (0.0, 0.0, 1.0)}, regions={"grasp": None},
+             actionable="line_fixed_handle", name="handle_0", size=np.ones(3))
+    d = dataclasses.replace(c, name="copy")
+    for f in dataclasses.fields(Part):
+        if f.name != "name":
+            assert getattr(d, f.name) is getattr(c, f.name), f.name
+    assert d.name == "copy"
+    assert "semantic='handle'" in repr(c)
+
+
+def test_part_bounds_are_the_stacked_min_max():
+    rng = np.random.default_rng(2)
+    for n in (1, 2, 7):
+        prims = [cuboid(*rng.uniform(0.01, 0.5, 3), rotation(rng.normal(size=3), rng.uniform(-3, 3))
+                        @ translation(*rng.normal(size=3))) for _ in range(n)]
+        part = Part("body", "x", prims)
+        b = np.stack([p.bounds() for p in prims])
+        ref = np.stack([b[:, 0].min(axis=0), b[:, 1].max(axis=0)])
+        assert part.bounds().tobytes() == ref.tobytes()
+
+
+def _rotation_nested(axis, angle):
+    x, y, z = axis
+    n = math.sqrt(x * x + y * y + z * z)
+    x, y, z = x / n, y / n, z / n
+    c, s = math.cos(angle), math.sin(angle)
+    C = 1.0 - c
+    return np.array([
+        [c + x * x * C, x * y * C - z * s, x * z * C + y * s, 0.0],
+        [y * x * C + z * s, c + y * y * C, y * z * C - x * s, 0.0],
+        [z * x * C - y * s, z * y * C + x * s, c + z * z * C, 0.0],
+        [0.0, 0.0, 0.0, 1.0],
+    ])
+
+
+def test_rotation_is_the_nested_formula_in_a_fresh_array():
+    rng = np.random.default_rng(3)
+    axes = [(1, 0, 0), (0, -1, 0), (0.0, 0.0, 1.0)] + [tuple(rng.normal(size=3)) for _ in range(200)]
+    angles = [0.0, -0.0, math.pi / 2, math.pi, -math.pi / 2] + list(rng.uniform(-7, 7, 200))
+    for i, axis in enumerate(axes):
+        angle = angles[i % len(angles)]
+        T = rotation(axis, angle)
+        assert T.tobytes() == _rotation_nested(axis, angle).tobytes()
+        assert T.shape == (4, 4) and T.dtype == np.float64 and T.flags.writeable
+    for angle in angles:
+        for rot, axis in ((rot_x, (1, 0, 0)), (rot_y, (0, 1, 0)), (rot_z, (0, 0, 1))):
+            assert rot(angle).tobytes() == _rotation_nested(axis, angle).tobytes()
+    about = rng.normal(size=3)
+    T = rotation((1.0, 2.0, -2.0), 0.7, about=about)
+    R = _rotation_nested((1.0, 2.0, -2.0), 0.7)
+    R[:3, 3] = about - R[:3, :3] @ about
+    assert T.tobytes() == R.tobytes()
+    A, B = rotation((0, 0, 1), 0.3), rotation((0, 0, 1), 0.3)
+    A[0, 3] = 5.0
+    assert B[0, 3] == 0.0
+    T = translation(1.0, 2.0, 3.0)
+    T[0, 0] = 7.0
+    assert translation(1.0, 2.0, 3.0)[0, 0] == 1.0
+
+
+def test_joint_axis_is_normalised_as_before():
+    b = ObjectBuilder()
+    root = b.create_link("base")
+    child = b.create_link("x", root)
+    for axis in [(0, 0, 1), (0.0, -0.0, -1.0), (-1, 0, 0), (1, 2, 3), np.array([0.3, -0.4, 0.5]), [-0.0, 2, 0]]:
+        j = child.set_joint("revolute", np.eye(4), axis=axis, limits=(0.0, 1.0))
+        x, y, z = (float(v) for v in axis)
+        n = math.sqrt(x * x + y * y + z * z)
+        assert j.axis.tobytes() == np.array((x / n, y / n, z / n)).tobytes()
+    with pytest.raises(ValueError, match="non-zero"):
+        child.set_joint("revolute", np.eye(4), axis=(0, 0, 0), limits=(0.0, 1.0))
+    j = child.set_joint("continuous", np.eye(4))
+    assert j.limits == (-np.inf, np.inf)
+
+
+def _link_poses_plain(obj, qpos=None):
+    q = obj.qpos_dict(qpos)
+    T = np.empty((len(obj.links), 4, 4))
+    T[0] = np.eye(4)
+    for i, link in enumerate(obj.links[1:], start=1):
+        j = link.joint
+        Tj = T[obj.link_index[j.parent]] @ j.origin
+        v = q.get(j.name, 0.0)
+        T[i] = Tj @ j.motion(v) if v else Tj
+    return T
+
+
+def test_link_poses_are_the_plain_chain_products():
+    rng = np.random.default_rng(4)
+    for c in artipg.categories():
+        obj = artipg.generate(c, 1)
+        assert obj.link_poses().tobytes() == _link_poses_plain(obj).tobytes()
+        lim = obj.limits()
+        q = rng.uniform(lim[:, 0], lim[:, 1])
+        q[rng.random(len(q)) < 0.3] = 0.0
+        assert obj.link_poses(q).tobytes() == _link_poses_plain(obj, q).tobytes()
