@@ -451,3 +451,144 @@ def test_validation_is_deterministic_and_independent_of_earlier_checks(category)
     first = [check_object(o).to_json() for o in objs]
     again = [check_object(o).to_json() for o in reversed(objs)][::-1]
     assert first == again
+
+
+# ---------------------------------------------------------------- cached streams, lean set-ups
+
+def test_uniform_streams_hand_out_the_generator_draws():
+    """Cached streams give exactly the doubles of ``default_rng([seed, key]).random``
+    call after call (ints, tuples, straddling and beyond the cache), read-only."""
+    import artipg.validate.streams as streams
+
+    rng = np.random.default_rng(4)
+    for cap in (streams._CAP, 64):
+        old = streams._CAP
+        streams._CAP = cap
+        try:
+            streams._cache.clear()
+            for seed, key in ((7, 0), (7, 3), (2 ** 62 + 5, 1)):
+                ref = np.random.default_rng([seed, key])
+                s = streams.UniformStream(seed, key)
+                for _ in range(12):
+                    size = int(rng.integers(0, 40)) if rng.random() < 0.5 else (2, int(rng.integers(0, 30)))
+                    got, want = s.random(size), ref.random(size)
+                    assert got.shape == want.shape and np.array_equal(got, want), (cap, seed, key, size)
+                    if got.size and cap > 64:
+                        with pytest.raises(ValueError):
+                            got.flat[0] = 0.5
+        finally:
+            streams._CAP = old
+            streams._cache.clear()
+
+
+@pytest.mark.parametrize("name", ["Cuboid", "Frustum", "Ring", "Sphere", "Torus", "Prism", "TriPrism"])
+def test_sample_groups_from_cached_streams_equal_those_from_fresh_generators(name):
+    """Every template's group samples (all pieces, or some) are the same from a
+    cached stream as from a freshly seeded generator, zero-area components included."""
+    import importlib
+
+    from artipg.validate.shapes import _sample_group
+    from artipg.validate.streams import UniformStream
+
+    modules = [importlib.import_module(f"artipg.geometry.{m}") for m in ("box", "revolve", "prism")]
+    tmpl = next(getattr(m, name) for m in modules if hasattr(m, name))
+    Prism = modules[2].Prism
+    rng = np.random.default_rng(11)
+    for trial in range(6):
+        M = int(rng.integers(1, 9))
+        P = rng.uniform(0.01, 0.3, (M, len(tmpl.params)))
+        if tmpl is Prism:
+            P[:, 2] = rng.integers(3, 9, M)
+        names = tmpl.params
+        for j, name in enumerate(names):
+            if name in ("cap0", "cap1"):
+                P[:, j] = rng.integers(0, 2, M)
+            if name == "arc":
+                P[:, j] = np.where(rng.random(M) < 0.5, 2 * np.pi, rng.uniform(0.5, 6.0, M))
+            if name == "taper":
+                P[:, j] = rng.uniform(-0.01, 0.01, M)
+        if "r_in" in names:
+            P[:, 1] = P[:, 0] * 0.8
+        if "z_lo" in names:
+            P[:, 1], P[:, 2] = -P[:, 0] * rng.uniform(0, 1, M), P[:, 0] * rng.uniform(0, 1, M)
+        if "r" in names and "R" in names:
+            P[:, 1] = P[:, 0] * 0.3
+        for want in (None, rng.random(M) < 0.5):
+            a, na = _sample_group(tmpl, P, UniformStream(5, trial), want)
+            b, nb = _sample_group(tmpl, P, np.random.default_rng([5, trial]), want)
+            assert np.array_equal(a, b) and np.array_equal(na, nb), (tmpl, trial, want)
+
+
+def _polygon_reference(qx, qy, px, py):
+    """The polygon signed distance as first written (np.roll, np.clip, count_nonzero)."""
+    bx, by = np.roll(px, -1, axis=0), np.roll(py, -1, axis=0)
+    ex, ey = bx - px, by - py
+    ee = np.maximum(ex * ex + ey * ey, 1e-30)
+    wx, wy = qx - px, qy - py
+    t = np.clip((wx * ex + wy * ey) / ee, 0.0, 1.0)
+    dx, dy = wx - t * ex, wy - t * ey
+    dist = np.sqrt(np.min(dx * dx + dy * dy, axis=0))
+    cond = (py > qy) != (by > qy)
+    xint = px + (qy - py) * ex / np.where(np.abs(ey) > 1e-30, ey, 1e-30)
+    inside = np.count_nonzero(cond & (qx < xint), axis=0) % 2 == 1
+    return np.where(inside, -dist, dist)
+
+
+def test_polygon_distances_equal_the_rolled_formula_bit_for_bit():
+    from artipg.validate.rowsdf import polygon_rows
+
+    rng = np.random.default_rng(12)
+    for V in (3, 4, 8, 16, 20):
+        K = 300
+        px, py = rng.normal(size=(V, K)), rng.normal(size=(V, K))
+        px[:, ::7] = np.round(px[:, ::7], 1)  # repeated and axis-aligned vertices
+        qx, qy = rng.normal(size=K), rng.normal(size=K)
+        qy[::5] = py[0, ::5]  # points level with a vertex
+        assert np.array_equal(polygon_rows(qx, qy, px, py), _polygon_reference(qx, qy, px, py)), V
+
+
+@pytest.mark.parametrize("category", CATEGORIES)
+def test_piece_tables_equal_their_plain_definitions(category):
+    """Boxes, flags and radial extents of every piece, against the per-piece
+    definitions (the templates' bounds, parameters and kinds)."""
+    from artipg.geometry.box import Cuboid
+    from artipg.geometry.revolve import Frustum, Ring, Sphere, Torus
+
+    for seed in SEEDS:
+        obj = artipg.generate(category, seed)
+        obj.__dict__.pop("primitive_table", None)  # without the table's cached boxes, then with them
+        for fresh in (True, False):
+            if fresh:
+                obj.primitive_table.__dict__.pop("local_boxes", None)
+            _, pc = _pieces(obj)
+            for i in range(pc.n):
+                g = pc.geom[i]
+                p = pc.params[i, :len(g.params)]
+                b = g.bounds_batch(p[None])[0]
+                assert np.array_equal(pc.center[i], 0.5 * (b[0] + b[1])) and np.array_equal(pc.half[i], 0.5 * (b[1] - b[0]))
+                full = g in (Frustum, Sphere) or (g is Ring and p[3] >= 2 * np.pi - 1e-9) or \
+                    (g is Torus and p[2] >= 2 * np.pi - 1e-9)
+                assert pc.is_box[i] == (g is Cuboid) and pc.symmetric[i] == full
+                assert pc.is_ball[i] == (g is Sphere and p[1] <= -p[0] and p[2] >= p[0])
+                rad = {Frustum: (0.0, max(p[0], p[1]) if g is Frustum else 0),
+                       Sphere: (0.0, p[0]), }.get(g)
+                if g is Ring:
+                    rad = (min(p[1], p[1] + p[4]), max(p[0], p[0] + p[4]))
+                elif g is Torus:
+                    rad = (p[0] - p[1], p[0] + p[1])
+                elif rad is None:
+                    rad = (-np.inf, np.inf)
+                assert tuple(pc.radial[i]) == tuple(rad), (category, seed, i, g)
+
+
+@pytest.mark.parametrize("category", CATEGORIES)
+def test_descendants_follow_the_parent_chains(category):
+    for seed in SEEDS:
+        kin = Kinematics.of(artipg.generate(category, seed))
+        for k in range(kin.n_links):
+            chain, i = set(), k
+            while i >= 0:
+                chain.add(i)
+                i = int(kin.parent[i])
+            assert [bool(kin.descendants[i, k]) for i in range(kin.n_links)] == \
+                [i in chain for i in range(kin.n_links)], (category, seed, k)

@@ -202,7 +202,7 @@ def _turns_in_place(kin, pieces, axes, W0) -> np.ndarray:
     J = len(axes[0])
     out = np.zeros((J, pieces.n), dtype=bool)
     m = pieces.symmetric_rows
-    if not len(m):
+    if not len(m) or kin.slides.all():
         return out
     z = W0[m, :3, 2][None]  # (1, m, 3)
     a = axes[0][:, None, :]  # (J, 1, 3)

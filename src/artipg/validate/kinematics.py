@@ -119,11 +119,13 @@ class Kinematics:
     def descendants(self) -> np.ndarray:
         """Boolean (L, L): ``[i, k]`` is True when link ``k`` is ``i`` or below it."""
         L = self.n_links
-        m = np.eye(L, dtype=bool)
-        for k in range(1, L):  # topological order: a parent's row is final before its children
-            p = self.parent[k]
-            if p >= 0:
-                m[:, k] |= m[:, p]
+        parent = self.parent.tolist()
+        up: list = [[] for _ in range(L)]  # ancestors of each link (itself first)
+        for k in range(L):  # topological order: a parent's list is final before its children
+            p = parent[k]
+            up[k] = [k] + (up[p] if p >= 0 else [])
+        m = np.zeros((L, L), dtype=bool)
+        m[[i for a in up for i in a], [k for k, a in enumerate(up) for _ in a]] = True
         return m
 
     def sweep_values(self, i: int, n: int = 16) -> np.ndarray:

@@ -22,6 +22,10 @@ from artipg.geometry.prism import MAX_SIDES, Prism, TriPrism
 from artipg.geometry.revolve import Frustum, Ring, Sphere, Torus
 
 
+#: ``np.roll(np.arange(V), -1)`` for small V: the next vertex of each polygon vertex.
+_NEXT = [np.roll(np.arange(v), -1) for v in range(17)]
+
+
 def _cols(x):
     """Components (3 contiguous arrays (K,)) of points (K, 3)."""
     c = np.ascontiguousarray(np.asarray(x, dtype=float).T)
@@ -48,19 +52,21 @@ def prepare_cuboid(P: np.ndarray):
 def prepare_polygon(px, py):
     """``f(qx, qy)``: signed distance of 2-D points (``qx``, ``qy``: (K,)) to one polygon
     per point with vertex coordinates ``px``, ``py`` (V, K) (see :func:`polygon_rows`)."""
-    bx, by = np.roll(px, -1, axis=0), np.roll(py, -1, axis=0)
+    nxt = _NEXT[len(px)] if len(px) < len(_NEXT) else np.roll(np.arange(len(px)), -1)
+    bx, by = px[nxt], py[nxt]  # the next vertex of each (np.roll(p, -1, axis=0))
     ex, ey = bx - px, by - py
     ee = np.maximum(ex * ex + ey * ey, 1e-30)
     ey_safe = np.where(np.abs(ey) > 1e-30, ey, 1e-30)
 
     def f(qx, qy):
         wx, wy = qx - px, qy - py
-        t = np.clip((wx * ex + wy * ey) / ee, 0.0, 1.0)
+        t = np.minimum(np.maximum((wx * ex + wy * ey) / ee, 0.0), 1.0)  # np.clip without its wrapper
         dx, dy = wx - t * ex, wy - t * ey
-        dist = np.sqrt(np.min(dx * dx + dy * dy, axis=0))
-        cond = (py > qy) != (by > qy)
+        dist = np.sqrt(np.minimum.reduce(dx * dx + dy * dy, axis=0))
+        above = py > qy
+        cond = above != above[nxt]  # (py > qy) != (by > qy)
         xint = px + (qy - py) * ex / ey_safe
-        inside = np.count_nonzero(cond & (qx < xint), axis=0) % 2 == 1
+        inside = np.add.reduce(cond & (qx < xint), axis=0, dtype=np.int64) % 2 == 1
         return np.where(inside, -dist, dist)
 
     return f
@@ -99,7 +105,8 @@ def wedge_rows(X, Y, arc: np.ndarray) -> np.ndarray:
 def _prepare_profile(r_lo_bot, r_hi_bot, r_hi_top, r_lo_top, h):
     """(ρ, z) quadrilateral profiles [(r_lo_bot, -h/2), (r_hi_bot, -h/2), (r_hi_top, h/2),
     (r_lo_top, h/2)] of solids of revolution: ``f(x)`` -> profile SDF, X, Y."""
-    poly = prepare_polygon(np.stack([r_lo_bot, r_hi_bot, r_hi_top, r_lo_top]), np.stack([-h / 2, -h / 2, h / 2, h / 2]))
+    zb, zt = -h / 2, h / 2
+    poly = prepare_polygon(np.array([r_lo_bot, r_hi_bot, r_hi_top, r_lo_top]), np.array([zb, zb, zt, zt]))
 
     def f(x):
         X, Y, Z = _cols(x)
@@ -183,7 +190,7 @@ def prepare_prism(P):
 def prepare_tri_prism(P):
     w, t, a, d = P[:, 0], P[:, 1], P[:, 2], P[:, 3]
     z = np.zeros_like(w)
-    poly = prepare_polygon(np.stack([-w / 2, w / 2, a]), np.stack([z, z, t]))
+    poly = prepare_polygon(np.array([-w / 2, w / 2, a]), np.array([z, z, t]))
 
     def f(x):
         X, Y, Z = _cols(x)

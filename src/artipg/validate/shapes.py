@@ -20,12 +20,14 @@ if all were drawn, so a piece gets the same samples whenever and with whichever 
 it is asked for (drawing only the requested pieces from one shared stream once made a
 check's verdict depend on the order of earlier queries). The draws and arithmetic are
 the templates' own ``sample_components``; only the patch tables are built once per
-piece instead of once per sample.
+piece instead of once per sample, and the streams' doubles come from a shared cache
+(:mod:`artipg.validate.streams`: every object uses the same few streams).
 """
 
 from __future__ import annotations
 
 from functools import cached_property
+from typing import NamedTuple
 
 import numpy as np
 
@@ -33,6 +35,7 @@ from artipg.geometry.box import Cuboid, RectRing
 from artipg.geometry.patches import sample_family
 from artipg.geometry.revolve import Frustum, Ring, Sphere, Torus
 from artipg.validate.rowsdf import PREPARE, prepare_quad_profiles
+from artipg.validate.streams import UniformStream
 
 #: Surface samples per square metre, and the per-component minimum / maximum.
 DENSITY = 2000.0
@@ -88,19 +91,23 @@ class Pieces:
         self._kind = np.array(kind, dtype=np.int64)
         self._nparams = [len(g.params) if g is not None else 0 for g in kinds]
         M = len(self.geom)
-
-        def of_kind(*gs):
-            return np.array([g in gs for g in kinds] + [False], dtype=bool)[self._kind if M else np.zeros(0, int)]
-
-        self.is_box = of_kind(Cuboid)
+        # template of every piece as a small code, for per-template flags
+        code = np.array([_CODES.get(g, 0) for g in kinds] + [0], dtype=np.int64)[self._kind if M else np.zeros(0, int)]
+        self._code = code
+        self.is_box = code == _CODES[Cuboid]
         # full solids of revolution about their local z axis (frustum, full ring or
         # torus, sphere): unchanged by a turn about that axis
-        full = self.params[:, 3] >= 2 * np.pi - 1e-9 if self.params.shape[1] > 3 else np.zeros(M, bool)
-        arc = self.params[:, 2] >= 2 * np.pi - 1e-9 if self.params.shape[1] > 2 else np.zeros(M, bool)
+        w = self.params.shape[1]
+        full = self.params[:, 3] >= 2 * np.pi - 1e-9 if w > 3 else np.zeros(M, bool)
+        arc = self.params[:, 2] >= 2 * np.pi - 1e-9 if w > 2 else np.zeros(M, bool)
         # whole balls (a sphere not cut by its slab): exact ball-ball distances
-        P3 = self.params[:, :3] if self.params.shape[1] >= 3 else np.zeros((M, 3))
-        self.is_ball = of_kind(Sphere) & (P3[:, 1] <= -P3[:, 0]) & (P3[:, 2] >= P3[:, 0])
-        self.symmetric = of_kind(Frustum, Sphere) | (of_kind(Ring) & full) | (of_kind(Torus) & arc)
+        sphere = code == _CODES[Sphere]
+        if sphere.any():
+            self.is_ball = sphere & (self.params[:, 1] <= -self.params[:, 0]) & (self.params[:, 2] >= self.params[:, 0])
+        else:
+            self.is_ball = sphere
+        self.symmetric = ((code == _CODES[Frustum]) | sphere | ((code == _CODES[Ring]) & full)
+                          | ((code == _CODES[Torus]) & arc))
         self.symmetric_rows = self.symmetric.nonzero()[0]
         self.start = np.zeros(M, dtype=np.int64)
         self.count = np.zeros(M, dtype=np.int64)
@@ -121,14 +128,16 @@ class Pieces:
         M = self.n
         Q = np.zeros((M, 5))
         Q[:, :min(5, self.params.shape[1])] = self.params[:, :5]
-        kind = [self._kinds[k] for k in self._kind.tolist()]
-        out = np.tile([-np.inf, np.inf], (M, 1))
-        for g, lo, hi in ((Frustum, 0.0, np.maximum(Q[:, 0], Q[:, 1])),
-                          (Ring, np.minimum(Q[:, 1], Q[:, 1] + Q[:, 4]), np.maximum(Q[:, 0], Q[:, 0] + Q[:, 4])),
-                          (Sphere, 0.0, Q[:, 0]), (Torus, Q[:, 0] - Q[:, 1], Q[:, 0] + Q[:, 1])):
-            sel = np.array([k is g for k in kind], dtype=bool)
-            out[sel, 0] = np.broadcast_to(lo, (M,))[sel]
-            out[sel, 1] = hi[sel]
+        out = np.empty((M, 2))
+        out[:, 0], out[:, 1] = -np.inf, np.inf
+        code = self._code
+        for g, lo, hi in ((Frustum, lambda: 0.0, lambda: np.maximum(Q[:, 0], Q[:, 1])),
+                          (Ring, lambda: np.minimum(Q[:, 1], Q[:, 1] + Q[:, 4]), lambda: np.maximum(Q[:, 0], Q[:, 0] + Q[:, 4])),
+                          (Sphere, lambda: 0.0, lambda: Q[:, 0]), (Torus, lambda: Q[:, 0] - Q[:, 1], lambda: Q[:, 0] + Q[:, 1])):
+            sel = code == _CODES[g]
+            if sel.any():
+                out[sel, 0] = np.broadcast_to(lo(), (M,))[sel]
+                out[sel, 1] = hi()[sel]
         return out
 
     @property
@@ -173,7 +182,7 @@ class Pieces:
             else:
                 rows = (self._kind == k).nonzero()[0]
                 want = need[rows]
-                p, cnt = _sample_group(g, self.params[rows, :self._nparams[k]], self._stream(k),
+                p, cnt = _sample_group(g, self.params[rows, :self._nparams[k]], UniformStream(self._seed, k),
                                        None if want.all() else want)
                 rows, cnt = rows[want], cnt[want]
             self.start[rows] = self._size + cnt.cumsum() - cnt
@@ -262,7 +271,8 @@ class Pieces:
         solid goes through the exact box-box tests of :mod:`artipg.validate.contacts`.
         """
         table = obj.primitive_table
-        geom, Ps, Ts, links, parts, kinds = [], [], [], [], [], []
+        local = getattr(table, "local_boxes", None)  # the templates' bounds_batch, cached by generation
+        geom, Ps, Ts, links, parts, boxes = [], [], [], [], [], []
         for g in table.groups:
             T = table.prim_T[g.prim]
             if g.geom is RectRing:
@@ -270,32 +280,40 @@ class Pieces:
                 Tb = T.repeat(4, axis=0)
                 Tb[:, :3, 3] += np.einsum("kij,kj->ki", Tb[:, :3, :3], offs)
                 geom += [Cuboid] * len(sizes)
-                kinds.append(Cuboid)
                 Ps.append(sizes)
                 Ts.append(Tb)
                 links.append(np.repeat(g.link, 4))
                 parts.append(np.repeat(g.part, 4))
+                boxes.append(Cuboid.bounds_batch(sizes))
             else:
                 geom += [g.geom] * len(g.P)
-                kinds.append(g.geom)
                 Ps.append(g.P)
                 Ts.append(T)
                 links.append(g.link)
                 parts.append(g.part)
+                boxes.append(local[g.prim] if local is not None else g.geom.bounds_batch(g.P))
         M = len(geom)
         width = max(P.shape[1] for P in Ps)
-        params = np.zeros((M, width))
-        center = np.zeros((M, 3))
-        half = np.zeros((M, 3))
-        k = 0
-        for P, g in zip(Ps, kinds):
-            params[k:k + len(P), :P.shape[1]] = P
-            b = g.bounds_batch(P)
-            center[k:k + len(P)] = 0.5 * (b[:, 0] + b[:, 1])
-            half[k:k + len(P)] = 0.5 * (b[:, 1] - b[:, 0])
-            k += len(P)
-        return cls(np.concatenate(links), np.concatenate(parts), np.concatenate(Ts), center, half, geom, params,
+        if len(Ps) == 1 and width == Ps[0].shape[1]:
+            params = np.array(Ps[0], dtype=float)
+            b = boxes[0]
+        else:
+            params = np.zeros((M, width))
+            k = 0
+            for P in Ps:
+                params[k:k + len(P), :P.shape[1]] = P
+                k += len(P)
+            b = np.concatenate(boxes)
+        center = 0.5 * (b[:, 0] + b[:, 1])
+        half = 0.5 * (b[:, 1] - b[:, 0])
+        one = len(links) == 1
+        return cls(links[0] if one else np.concatenate(links), parts[0] if one else np.concatenate(parts),
+                   Ts[0] if one else np.concatenate(Ts), center, half, geom, params,
                    [p.name for p in obj.parts], obj.part_link, rng)
+
+
+#: Small codes of the templates that get per-template flags (0: any other, meshes).
+_CODES = {Cuboid: 1, Frustum: 2, Ring: 3, Sphere: 4, Torus: 5}
 
 
 def stream_seed(rng) -> int:
@@ -343,47 +361,55 @@ def _sample_group(geom, P, rng, want=None):
     only the samples of those pieces are computed: the stream is consumed as for all
     pieces (a family sampler's one draw is taken here and handed to it cut down to
     the wanted samples), so every piece gets the same samples whichever are wanted.
+    ``rng`` needs only ``random`` (a :class:`numpy.random.Generator` or a
+    :class:`artipg.validate.streams.UniformStream`).
 
     Returns the points (N, 3), piece by piece in row order (a box's corners and edge
     points after its surface samples), and the count per piece (M,) (zero for the
     pieces not wanted).
     """
     comp_area = geom.component_areas(P)
-    n = np.where(comp_area > 0.0,
-                 np.clip(np.ceil(comp_area * DENSITY), MIN_PER_COMPONENT, MAX_PER_COMPONENT), 0).astype(np.int64)
     M, C = comp_area.shape
-    used = n.sum(axis=1).nonzero()[0]  # pieces with samples, in order
-    cells = np.arange(len(used) * C).repeat(n[used].ravel())  # (used piece, component) of each sample
+    # np.where(area > 0, clip(ceil(area * DENSITY), MIN, MAX), 0), in place
+    n = np.ceil(comp_area * DENSITY)
+    np.minimum(np.maximum(n, MIN_PER_COMPONENT, out=n), MAX_PER_COMPONENT, out=n)
+    n[~(comp_area > 0.0)] = 0.0
+    n = n.astype(np.int64)
+    per = n.sum(axis=1)
+    used = per.nonzero()[0]  # pieces with samples, in order
+    if len(used) < M:
+        n, Pu = n[used], P[used]
+    else:
+        Pu = P
+    cells = np.arange(len(used) * C).repeat(n.ravel())  # (used piece, component) of each sample
     comp = cells % C
     inv = cells // C
-    blocks = geom.patches(P[used])
-    pcomp = np.concatenate([b.comp for b in blocks])
-    patch = np.full(C, -1)
-    patch[pcomp] = np.arange(len(pcomp))
-    if len(set(pcomp.tolist())) == len(pcomp) and (patch[n[used].any(axis=0)] >= 0).all():
+    blocks = geom.patches(Pu)
+    lay = _layout(blocks, C)
+    if lay.one_per_comp and (lay.complete or (lay.patch[n.any(axis=0)] >= 0).all()):
         # one patch per component: :func:`artipg.geometry.base.pick` returns it (every
         # other weight is zero and u * w < w); its draw is still taken
         rng.random(len(cells))
-        which = patch[comp]
+        which = lay.patch[comp]
     else:  # pick over each sample's component-masked patch areas, cumulated per cell
         area = np.concatenate([b.area for b in blocks])  # (patches, used)
-        cum = np.cumsum(np.where(pcomp[None, None, :] == np.arange(C)[None, :, None], area.T[:, None, :], 0.0),
+        cum = np.cumsum(np.where(lay.pcomp[None, None, :] == np.arange(C)[None, :, None], area.T[:, None, :], 0.0),
                         axis=2).reshape(len(used) * C, -1)[cells]
         u = rng.random(len(cells)) * cum[:, -1]
         which = (u[:, None] >= cum[:, :-1]).sum(axis=1)
     if want is None:
-        take, pos, rows = None, np.arange(len(cells)), np.arange(M)
+        take = None
+        p = np.empty((len(cells), 3))
     else:
         take = want[used][inv]
         pos = take.cumsum() - 1  # output row of each wanted sample
-        rows = want.nonzero()[0]
-    p = np.empty((len(pos) if take is None else int(take.sum()), 3))
-    end = 0
-    for b in blocks:  # each family sampler draws only when its block has samples
-        start, end = end, end + len(b.comp)
-        sel = ((which >= start) & (which < end)).nonzero()[0] if len(blocks) > 1 else np.arange(len(cells))
+        p = np.empty((int(pos[-1]) + 1 if len(pos) else 0, 3))
+    blk = lay.block[which] if len(blocks) > 1 else None
+    for bi, b in enumerate(blocks):  # each family sampler draws only when its block has samples
+        sel = (blk == bi).nonzero()[0] if blk is not None else np.arange(len(cells))
         if not len(sel):
             continue
+        start = lay.start[bi]
         if take is None:
             p[sel] = _family(b, which[sel] - start, inv[sel], rng)
         elif b.family in _REPLAYABLE:  # compute the wanted samples only, from the same draw
@@ -395,7 +421,11 @@ def _sample_group(geom, P, rng, want=None):
         else:
             keep = take[sel]
             p[pos[sel[keep]]] = _family(b, which[sel] - start, inv[sel], rng)[keep]
-    per = n.sum(axis=1) if want is None else np.where(want, n.sum(axis=1), 0)
+    if want is None:
+        rows = np.arange(M)
+    else:
+        per = per * want
+        rows = want.nonzero()[0]
     if geom is not Cuboid:
         return p, per
     # corners and edge points: where boxes poke into other solids; after each box's samples
@@ -406,6 +436,36 @@ def _sample_group(geom, P, rng, want=None):
     out[(got.cumsum() + f * np.arange(len(rows)))[:, None] + np.arange(f)] = _BOX_FEATURES[None] * P[rows, None, :]
     per[rows] += f
     return out, per
+
+
+class _Layout(NamedTuple):
+    """How a template's patch blocks cover its components (see :func:`_layout`)."""
+
+    pcomp: np.ndarray  # (patches,) component of each patch
+    patch: np.ndarray  # (C,) the patch of each component when there is one per component, else -1
+    block: np.ndarray  # (patches,) block of each patch
+    start: list  # first patch index of each block
+    one_per_comp: bool  # no component has two patches
+    complete: bool  # every component has a patch
+
+
+_LAYOUTS: dict = {}
+
+
+def _layout(blocks, C: int) -> _Layout:
+    """The :class:`_Layout` of patch blocks over ``C`` components (cached: it depends
+    on the blocks' families and components only)."""
+    key = (C,) + tuple((b.family, b.comp.tobytes()) for b in blocks)
+    lay = _LAYOUTS.get(key)
+    if lay is None:
+        pcomp = np.concatenate([b.comp for b in blocks])
+        patch = np.full(C, -1)
+        patch[pcomp] = np.arange(len(pcomp))
+        sizes = [len(b.comp) for b in blocks]
+        lay = _Layout(pcomp, patch, np.arange(len(blocks)).repeat(sizes), np.cumsum([0] + sizes[:-1]).tolist(),
+                      len(set(pcomp.tolist())) == len(pcomp), bool((patch >= 0).all()))
+        _LAYOUTS[key] = lay
+    return lay
 
 
 def _family(b, patch, row, rng) -> np.ndarray:
