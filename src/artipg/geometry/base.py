@@ -18,7 +18,6 @@ from dataclasses import dataclass, field
 from typing import ClassVar, NamedTuple
 
 import numpy as np
-from scipy.spatial import ConvexHull
 
 from artipg.geometry.patches import sample_family
 from artipg.geometry.transforms import IDENTITY, apply
@@ -207,6 +206,8 @@ def centred_boxes(hx, hy, hz) -> np.ndarray:
 
 def convex_hull(points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Vertices (V, 3) and outward triangles (F, 3) of the convex hull of ``points``."""
+    from scipy.spatial import ConvexHull  # imported here: only collision meshes need it
+
     hull = ConvexHull(points)
     V = points[hull.vertices]
     remap = np.full(len(points), -1, dtype=np.int64)

@@ -2,8 +2,9 @@
 
 from __future__ import annotations
 
+import functools
+
 import numpy as np
-import trimesh
 
 from artipg.geometry.base import CollisionPiece, GeometryTemplate, Primitive
 from artipg.geometry.patches import linear
@@ -29,7 +30,14 @@ def _box_tables():
 
 
 _BOX_TABLE = _box_tables()
-_UNIT_BOX = (np.asarray(trimesh.creation.box().vertices), np.asarray(trimesh.creation.box().faces, dtype=np.int64))
+@functools.cache
+def _unit_box() -> tuple[np.ndarray, np.ndarray]:
+    """Vertices (8, 3) and faces (12, 3) of trimesh's unit box (trimesh is imported only
+    when a mesh is built: ``import artipg`` stays light)."""
+    import trimesh
+
+    box = trimesh.creation.box()
+    return np.asarray(box.vertices), np.asarray(box.faces, dtype=np.int64)
 
 
 def _frame_faces() -> np.ndarray:
@@ -95,7 +103,8 @@ class Cuboid(GeometryTemplate):
 
     @classmethod
     def mesh_arrays(cls, p, sections=32):
-        return _UNIT_BOX[0] * np.asarray(p[:3], dtype=float), _UNIT_BOX[1]
+        V, F = _unit_box()
+        return V * np.asarray(p[:3], dtype=float), F
 
     @classmethod
     def volume(cls, p):

@@ -7,7 +7,6 @@ from __future__ import annotations
 import math
 
 import numpy as np
-import trimesh
 
 from artipg.geometry.base import (
     TWO_PI,
@@ -113,6 +112,8 @@ def revolve_arrays(profile, arc: float = FULL, sections: int = 32, cap_start: bo
 def revolve_mesh(profile, arc: float = FULL, sections: int = 32, cap_start: bool = True,
                  cap_end: bool = True, closed_profile: bool = True) -> trimesh.Trimesh:
     """:func:`revolve_arrays` as a ``trimesh.Trimesh``."""
+    import trimesh
+
     return trimesh.Trimesh(*revolve_arrays(profile, arc, sections, cap_start, cap_end, closed_profile),
                            process=False)
 

@@ -13,7 +13,6 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-import trimesh
 
 from artipg.geometry.base import Primitive
 from artipg.geometry.revolve import Frustum, Torus
@@ -115,6 +114,8 @@ class Tube:
 
     def mesh(self, sections: int = 24) -> trimesh.Trimesh:
         """Watertight loft of the tube (outward faces)."""
+        import trimesh
+
         st = list(self._stations())
         phi = np.linspace(0.0, 2 * math.pi, sections, endpoint=False)
         rings = []
