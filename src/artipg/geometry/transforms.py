@@ -42,15 +42,16 @@ def rotation(axis, angle: float, about=None) -> np.ndarray:
     """
     x, y, z = axis
     n = math.sqrt(x * x + y * y + z * z)
-    T = _unit_rotation(x / n, y / n, z / n, angle)
+    T = unit_rotation(x / n, y / n, z / n, angle)
     if about is not None:
         p = np.asarray(about, dtype=float)
         T[:3, 3] = p - T[:3, :3] @ p
     return T
 
 
-def _unit_rotation(x: float, y: float, z: float, angle: float) -> np.ndarray:
-    """Rotation (4, 4) by ``angle`` radians about the unit axis ``(x, y, z)`` (Rodrigues)."""
+def unit_rotation(x: float, y: float, z: float, angle: float) -> np.ndarray:
+    """Rotation (4, 4) by ``angle`` radians about the axis ``(x, y, z)``, which must be
+    unit length already (Rodrigues' formula; :func:`rotation` normalises first)."""
     c, s = math.cos(angle), math.sin(angle)
     C = 1.0 - c
     return np.array(  # a flat tuple converts faster than nested lists
@@ -66,17 +67,17 @@ def _unit_rotation(x: float, y: float, z: float, angle: float) -> np.ndarray:
 # the unit axes are their own normalisation (x / 1.0 == x): same values as rotation()
 def rot_x(angle: float) -> np.ndarray:
     """Rotation about +X by ``angle`` radians."""
-    return _unit_rotation(1.0, 0.0, 0.0, angle)
+    return unit_rotation(1.0, 0.0, 0.0, angle)
 
 
 def rot_y(angle: float) -> np.ndarray:
     """Rotation about +Y by ``angle`` radians."""
-    return _unit_rotation(0.0, 1.0, 0.0, angle)
+    return unit_rotation(0.0, 1.0, 0.0, angle)
 
 
 def rot_z(angle: float) -> np.ndarray:
     """Rotation about +Z by ``angle`` radians."""
-    return _unit_rotation(0.0, 0.0, 1.0, angle)
+    return unit_rotation(0.0, 0.0, 1.0, angle)
 
 
 def pose(xyz=(0.0, 0.0, 0.0), rot=None) -> np.ndarray:

@@ -8,7 +8,7 @@ from functools import cached_property
 
 import numpy as np
 
-from artipg.geometry.transforms import IDENTITY
+from artipg.geometry.transforms import IDENTITY, unit_rotation
 from artipg.model.part import Part
 
 JOINT_TYPES = ("fixed", "revolute", "prismatic", "continuous")
@@ -55,14 +55,7 @@ class Joint:
             T[:3, 3] = self.axis * q
             return T
         x, y, z = self.axis
-        c, s = math.cos(q), math.sin(q)
-        C = 1.0 - c
-        return np.array([
-            [c + x * x * C, x * y * C - z * s, x * z * C + y * s, 0.0],
-            [y * x * C + z * s, c + y * y * C, y * z * C - x * s, 0.0],
-            [z * x * C - y * s, z * y * C + x * s, c + z * z * C, 0.0],
-            [0.0, 0.0, 0.0, 1.0],
-        ])
+        return unit_rotation(float(x), float(y), float(z), q)
 
 
 @dataclass(eq=False)
