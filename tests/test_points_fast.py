@@ -18,7 +18,7 @@ from artipg.annotate.points import SAMPLING_STREAM, PrimitiveTable, sample_point
 from artipg.geometry import Cuboid, Frustum, Prism, RectRing, Ring, Sphere, Torus, TriPrism
 from artipg.geometry.box import _BOX_TABLE, _RING_COMP, _RING_SIDES, _RING_TABLE, _RING_TABLES
 from artipg.geometry.patches import (FAMILIES, TWO_PI, Patch, bands, block, linear, rects, sample_family,
-                                     sectors, tori, tris, zones)
+                                     sectors, tori, torus_tube_angles, tris, zones)
 from artipg.geometry.revolve import _FRUSTUM_CAPS, _RING_CAPS
 from artipg.rules.streams import streams
 from artipg.vocabulary import label_id
@@ -339,16 +339,8 @@ def _plain_sampler(family, q, rng):
         c, d = np.cos(t * TWO_PI), np.sin(t * TWO_PI)
         return np.stack([rho * c, rho * d, z, rho * c / R, rho * d / R, z / R])
     R, r, arc = q
-    k = len(R)
-    v = np.empty(k)
-    todo = np.arange(k)
-    while len(todo):
-        cand = rng.random(len(todo)) * TWO_PI
-        Rt, rt = R[todo], r[todo]
-        ok = rng.random(len(todo)) * (Rt + rt) <= Rt + rt * np.cos(cand)
-        v[todo[ok]] = cand[ok]
-        todo = todo[~ok]
-    th = rng.random(k) * arc
+    v = torus_tube_angles(R, r, rng)  # the rejection step is shared; the assembly is under test
+    th = rng.random(len(R)) * arc
     cv, sv, ct, st = np.cos(v), np.sin(v), np.cos(th), np.sin(th)
     rho = R + r * cv
     return np.stack([rho * ct, rho * st, r * sv, cv * ct, cv * st, sv])

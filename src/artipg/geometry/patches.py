@@ -223,19 +223,24 @@ def _zone(q, rng, out):
     return out
 
 
-def _torus(q, rng, out):
-    R, r, arc = q
-    k = len(R)
-    # tube angle v has density ∝ R + r cos v: rejection, acceptance >= 1/2 since r < R
-    v = np.empty(k)
-    todo = np.arange(k)
+def torus_tube_angles(R: np.ndarray, r: np.ndarray, rng: np.random.Generator) -> np.ndarray:
+    """Area-uniform tube angles (k,) in [0, 2π) of tori with centre-line radii ``R`` and
+    tube radii ``r`` (k,): density ∝ R + r cos v, by rejection (acceptance >= 1/2 as r < R)."""
+    v = np.empty(len(R))
+    todo = np.arange(len(R))
     while len(todo):
         cand = rng.random(len(todo)) * TWO_PI
         Rt, rt = R[todo], r[todo]
         ok = rng.random(len(todo)) * (Rt + rt) <= Rt + rt * np.cos(cand)
         v[todo[ok]] = cand[ok]
         todo = todo[~ok]
-    th = rng.random(k) * arc
+    return v
+
+
+def _torus(q, rng, out):
+    R, r, arc = q
+    v = torus_tube_angles(R, r, rng)
+    th = rng.random(len(R)) * arc
     cv, sv, ct, st = np.cos(v), np.sin(v), np.cos(th), np.sin(th)
     rho = R + r * cv
     np.multiply(rho, ct, out=out[0])
