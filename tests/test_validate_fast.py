@@ -423,6 +423,74 @@ def test_refined_rest_distances_respect_the_bounding_boxes(category):
         assert (d[far] > 2e-3).all(), (category, seed)
 
 
+def _refine_full_stencils(pieces, a, b, Wa, Wb, starts=3, iters=10, stop_below=0.0):
+    """:func:`refine_distance` as first written: both pieces' 7-point stencils
+    evaluated at every point reached, whichever values a step uses."""
+    from artipg.validate.contacts import _OFFS, _ON_SURFACE, _sdf_world, _step, _to_world
+
+    K = len(a)
+    src, tgt = np.concatenate([a, b]), np.concatenate([b, a])
+    Ws, Wt = np.concatenate([Wa, Wb]), np.concatenate([Wb, Wa])
+    pieces.require(src)
+    counts = pieces.count[src]
+    job = np.arange(2 * K).repeat(counts)
+    first = counts.cumsum() - counts
+    idx = np.arange(int(counts.sum())) - first[job] + pieces.start[src][job]
+    X = _to_world(pieces.points[idx], Ws[job])
+    d = _sdf_world(pieces, tgt[job], Wt[job], X)
+    order = np.lexsort((d, job))
+    pick = order[(np.arange(len(order)) - first[job[order]]) < starts]
+    p, j = X[pick], job[pick]
+    best = np.full(2 * K, np.inf)
+    np.minimum.at(best, j, d[pick])
+    n = len(j)
+    rt, rs = tgt[j], src[j]
+    both = pieces.prepare(np.concatenate([rt, rt.repeat(6), rs, rs.repeat(6)]))
+    Rt, tt, Rs, ts = Wt[j][:, :3, :3], Wt[j][:, :3, 3], Ws[j][:, :3, :3], Ws[j][:, :3, 3]
+
+    def stencils(X):
+        Lt = np.einsum("nji,nj->ni", Rt, X - tt)
+        Ls = np.einsum("nji,nj->ni", Rs, X - ts)
+        d = both(np.concatenate([Lt, (Lt[:, None, :] + _OFFS[None]).reshape(-1, 3),
+                                 Ls, (Ls[:, None, :] + _OFFS[None]).reshape(-1, 3)]))
+        return Lt, Ls, d[:7 * n], d[7 * n:]
+
+    Lt, _, dt, _ = stencils(p)
+    for _ in range(iters):
+        q = _step(Lt, dt, Rt, tt, n)
+        _, Ls, _, ds = stencils(q)
+        p = _step(Ls, ds, Rs, ts, n)
+        Lt, _, dt, ds = stencils(p)
+        off = np.abs(ds[:n])
+        on = (off <= _ON_SURFACE).nonzero()[0]
+        before = np.minimum(best[:K], best[K:])
+        np.minimum.at(best, j[on], dt[on] + off[on])
+        now = np.minimum(best[:K], best[K:])
+        if (now <= stop_below).all() or (before - now).max() < 1e-6:
+            break
+    return np.minimum(best[:K], best[K:])
+
+
+@pytest.mark.parametrize("category", CATEGORIES)
+def test_refinement_evaluates_only_the_stencils_it_uses_bit_for_bit(category):
+    """Refinement evaluates the target's stencil and the source's SDF at the points on
+    the source, the source's stencil at the points on the target: the same bounds,
+    bit for bit, as evaluating both stencils everywhere."""
+    for seed in SEEDS:
+        kin, pieces = _pieces(artipg.generate(category, seed))
+        W = kin.poses()[pieces.link] @ pieces.T
+        c, h = world_boxes(pieces, W)
+        a, b = close_pairs(c, h, 0.01)
+        keep = ~(pieces.is_box[a] & pieces.is_box[b]) & (pieces.part[a] != pieces.part[b])
+        a, b = a[keep], b[keep]
+        if not len(a):
+            continue
+        for kw in ({}, {"iters": 3, "stop_below": 2e-3}, {"starts": 1, "iters": 5}):
+            got = refine_distance(pieces, a, b, W[a], W[b], **kw)
+            want = _refine_full_stencils(pieces, a, b, W[a], W[b], **kw)
+            assert np.array_equal(got, want), (category, seed, kw)
+
+
 # ---------------------------------------------------------------- broken objects
 
 @pytest.mark.parametrize("category", CATEGORIES)

@@ -424,23 +424,25 @@ def refine_distance(pieces: Pieces, a: np.ndarray, b: np.ndarray, Wa: np.ndarray
     best = np.full(2 * K, np.inf)
     np.minimum.at(best, j, d[pick])
     # each iteration: project onto the target, back onto the source, and bound by the
-    # signed distance of that point to the target. Every point is evaluated once with
-    # the 7-point stencils (SDF and the gradient's) of both pieces: at a point on the
-    # target the source's stencil projects it back; at a point on the source the
-    # target's bounds the distance and projects it on, and the source's SDF says how
-    # far off the source surface it lies. The per-row SDF set-up is done once.
+    # signed distance of that point to the target. At a point p on the source the
+    # target's 7-point stencil (SDF and the gradient's) bounds the distance and projects
+    # p on, and the source's SDF at p says how far off the source surface it lies; at
+    # the point q reached on the target the source's stencil projects it back. Only
+    # these values are evaluated (row-wise, so the same as in a full evaluation of both
+    # stencils at every point); the per-row SDF set-up is done once.
     n = len(j)
     rt, rs = tgt[j], src[j]
-    both = pieces.prepare(np.concatenate([rt, rt.repeat(6), rs, rs.repeat(6)]))
+    at_p = pieces.prepare(np.concatenate([rt, rt.repeat(6), rs]))
+    at_q = pieces.prepare(np.concatenate([rs, rs.repeat(6)]))
     Rt, tt = Wt[j][:, :3, :3], Wt[j][:, :3, 3]
     Rs, ts = Ws[j][:, :3, :3], Ws[j][:, :3, 3]
-    Lt, _, dt, _ = _stencils(both, Rt, tt, Rs, ts, p, n)
+    Lt, dt, _ = _target_stencil(at_p, Rt, tt, Rs, ts, p, n)
     for _ in range(iters):
         q = _step(Lt, dt, Rt, tt, n)
-        _, Ls, _, ds = _stencils(both, Rt, tt, Rs, ts, q, n)
+        Ls, ds = _stencil(at_q, Rs, ts, q)
         p = _step(Ls, ds, Rs, ts, n)
-        Lt, _, dt, ds = _stencils(both, Rt, tt, Rs, ts, p, n)
-        off = np.abs(ds[:n])  # p's offset from the source surface
+        Lt, dt, off = _target_stencil(at_p, Rt, tt, Rs, ts, p, n)
+        off = np.abs(off)  # p's offset from the source surface
         on = (off <= _ON_SURFACE).nonzero()[0]
         before = np.minimum(best[:K], best[K:])
         np.minimum.at(best, j[on], dt[on] + off[on])
@@ -457,16 +459,22 @@ _ON_SURFACE = 1e-5
 _OFFS = np.concatenate([np.eye(3), -np.eye(3)]) * _H
 
 
-def _stencils(sdf, Rt, tt, Rs, ts, X, n):
-    """World points ``X`` (n, 3) in the frames of their target and source pieces
-    (``R*``, ``t*``: (n, 3, 3), (n, 3)), and the SDFs of both pieces at them and at
-    their six central-difference neighbours, (7n,) each (``sdf``: prepared for the
-    target rows seven times, then the source rows seven times)."""
+def _stencil(sdf, R, t, X):
+    """World points ``X`` (n, 3) in the frames of their pieces (``R``, ``t``: (n, 3, 3),
+    (n, 3)), and the SDF (7n,) of the pieces at them and at their six central-difference
+    neighbours (``sdf``: prepared for the rows, then the rows six times each)."""
+    L = np.einsum("nji,nj->ni", R, X - t)
+    return L, sdf(np.concatenate([L, (L[:, None, :] + _OFFS[None]).reshape(-1, 3)]))
+
+
+def _target_stencil(sdf, Rt, tt, Rs, ts, X, n):
+    """:func:`_stencil` of the target pieces at world points ``X`` (n, 3) and the source
+    pieces' SDF (n,) at them (``sdf``: prepared for the target rows seven times, then
+    the source rows once): ``(Lt, dt, ds)``."""
     Lt = np.einsum("nji,nj->ni", Rt, X - tt)
     Ls = np.einsum("nji,nj->ni", Rs, X - ts)
-    d = sdf(np.concatenate([Lt, (Lt[:, None, :] + _OFFS[None]).reshape(-1, 3),
-                            Ls, (Ls[:, None, :] + _OFFS[None]).reshape(-1, 3)]))
-    return Lt, Ls, d[:7 * n], d[7 * n:]
+    d = sdf(np.concatenate([Lt, (Lt[:, None, :] + _OFFS[None]).reshape(-1, 3), Ls]))
+    return Lt, d[:7 * n], d[7 * n:]
 
 
 def _step(L, d, R, t, n):

@@ -131,13 +131,18 @@ class Pieces:
         out = np.empty((M, 2))
         out[:, 0], out[:, 1] = -np.inf, np.inf
         code = self._code
-        for g, lo, hi in ((Frustum, lambda: 0.0, lambda: np.maximum(Q[:, 0], Q[:, 1])),
-                          (Ring, lambda: np.minimum(Q[:, 1], Q[:, 1] + Q[:, 4]), lambda: np.maximum(Q[:, 0], Q[:, 0] + Q[:, 4])),
-                          (Sphere, lambda: 0.0, lambda: Q[:, 0]), (Torus, lambda: Q[:, 0] - Q[:, 1], lambda: Q[:, 0] + Q[:, 1])):
-            sel = code == _CODES[g]
-            if sel.any():
-                out[sel, 0] = np.broadcast_to(lo(), (M,))[sel]
-                out[sel, 1] = hi()[sel]
+        for c in np.unique(code).tolist():
+            sel = (code == c).nonzero()[0]
+            q = Q[sel]
+            if c == _CODES[Frustum]:
+                out[sel, 0], out[sel, 1] = 0.0, np.maximum(q[:, 0], q[:, 1])
+            elif c == _CODES[Ring]:
+                out[sel, 0] = np.minimum(q[:, 1], q[:, 1] + q[:, 4])
+                out[sel, 1] = np.maximum(q[:, 0], q[:, 0] + q[:, 4])
+            elif c == _CODES[Sphere]:
+                out[sel, 0], out[sel, 1] = 0.0, q[:, 0]
+            elif c == _CODES[Torus]:
+                out[sel, 0], out[sel, 1] = q[:, 0] - q[:, 1], q[:, 0] + q[:, 1]
         return out
 
     @property
