@@ -72,13 +72,22 @@ def box_surface_grid(boxes: np.ndarray, spacing: float) -> tuple[np.ndarray, np.
 
     Every point of a face is within ``spacing * sqrt(2) / 2`` of a grid point.
     """
-    pts, idx = [], []
-    for b, (lo, hi) in enumerate(boxes):
-        n = np.maximum(2, np.ceil((hi - lo) / spacing).astype(int) + 1)
-        g = lo + _surface_lattice(*(int(k) for k in n)) * (hi - lo)
-        pts.append(g)
-        idx.append(np.full(len(g), b))
-    return np.concatenate(pts), np.concatenate(idx)
+    boxes = np.asarray(boxes, dtype=float)
+    lo, span = boxes[:, 0], boxes[:, 1] - boxes[:, 0]
+    n = np.maximum(2, np.ceil(span / spacing).astype(int) + 1)
+    u, idx = _surface_lattices(tuple(map(tuple, n.tolist())))
+    return lo[idx] + u * span[idx], idx.copy()
+
+
+@lru_cache(maxsize=1024)
+def _surface_lattices(counts: tuple) -> tuple[np.ndarray, np.ndarray]:
+    """The lattices of :func:`_surface_lattice` for boxes of ``counts`` ((nx, ny, nz)
+    per box) stacked (K, 3), and the box index (K,) of each point (read-only)."""
+    parts = [_surface_lattice(*c) for c in counts]
+    u = np.concatenate(parts) if parts else np.zeros((0, 3))
+    idx = np.repeat(np.arange(len(parts)), [len(p) for p in parts])
+    u.flags.writeable = idx.flags.writeable = False
+    return u, idx
 
 
 @lru_cache(maxsize=1024)
@@ -190,37 +199,40 @@ def world_grasps(obj, qpos=None, check: bool = True, gripper: Gripper = DEFAULT_
     poses = obj.part_poses(qpos)
     L = obj.link_poses(qpos)
     pj = part_joint(obj)
-    rows = []
-    for i, part in enumerate(obj.parts):
-        for g in part.grasps:
-            rows.append((i, poses[i] @ np.asarray(g.pose, dtype=float), float(g.width),
-                         poses[i][:3, :3] @ np.asarray(g.open_dir, dtype=float)))
+    rows = [(i, g) for i, part in enumerate(obj.parts) for g in part.grasps]
     G = len(rows)
     if G == 0:
         z = np.zeros((0, 3))
         return WorldGrasps(np.zeros((0, 4, 4)), np.zeros(0), z, z, np.zeros(0, np.int64), np.zeros(0, np.int64),
                            np.zeros(0), np.zeros(0, bool), np.zeros(0))
-    part = np.array([r[0] for r in rows], dtype=np.int64)
-    T = np.stack([r[1] for r in rows])
-    width = np.array([r[2] for r in rows])
-    open_dir = np.stack([r[3] for r in rows])
+    # stacked products: the same product per grasp as one call each, so the same numbers
+    part = np.array([i for i, _ in rows], dtype=np.int64)
+    Pp = poses[part]
+    T = Pp @ np.stack([np.asarray(g.pose, dtype=float) for _, g in rows])
+    width = np.array([float(g.width) for _, g in rows])
+    open_dir = (Pp[:, :3, :3] @ np.stack([np.asarray(g.open_dir, dtype=float) for _, g in rows])[:, :, None])[:, :, 0]
     joint = pj[part]
     lever = np.zeros(G)
-    for k in range(G):
-        if joint[k] < 0:
-            continue
-        j = obj.joints[joint[k]]
-        Tj = L[obj.link_index[j.child]]  # joint frame at q (the child link frame)
-        a = Tj[:3, :3] @ j.axis
-        s = _opening_sign(j)
-        if j.type == "prismatic":
-            open_dir[k] = s * a
-        else:
-            r = T[k, :3, 3] - Tj[:3, 3]
-            t = np.cross(a, r)
-            lever[k] = np.linalg.norm(t)
-            if lever[k] > 1e-6:  # on the axis (a knob's centre) keep the template's direction
-                open_dir[k] = s * t / lever[k]
+    moved = np.flatnonzero(joint >= 0)
+    if len(moved):
+        axis, sign, prismatic, origin = {}, {}, {}, {}
+        for ji in set(joint[moved].tolist()):
+            j = obj.joints[ji]
+            Tj = L[obj.link_index[j.child]]  # joint frame at q (the child link frame)
+            axis[ji], origin[ji] = Tj[:3, :3] @ j.axis, Tj[:3, 3]
+            sign[ji], prismatic[ji] = _opening_sign(j), j.type == "prismatic"
+        js = joint[moved].tolist()
+        a = np.stack([axis[ji] for ji in js])
+        sg = np.array([sign[ji] for ji in js])[:, None]
+        slide = np.array([prismatic[ji] for ji in js], dtype=bool)
+        open_dir[moved[slide]] = sg[slide] * a[slide]
+        turn = ~slide
+        if turn.any():
+            k = moved[turn]
+            t = np.cross(a[turn], T[k, :3, 3] - np.stack([origin[ji] for ji, on in zip(js, turn) if on]))
+            lever[k] = [np.sqrt(np.dot(v, v)) for v in t]  # np.linalg.norm of each, as it computes it
+            on_axis = lever[k] > 1e-6  # on the axis (a knob's centre) keep the template's direction
+            open_dir[k[on_axis]] = sg[turn][on_axis] * t[on_axis] / lever[k[on_axis]][:, None]
     n = np.linalg.norm(open_dir, axis=1)
     open_dir = np.where(n[:, None] > 1e-12, open_dir / np.maximum(n, 1e-12)[:, None], 0.0)
     longest = np.zeros(len(obj.parts))
@@ -243,19 +255,28 @@ def collision_margin(spacing: float) -> float:
 def gripper_points(pose: np.ndarray, width: np.ndarray, gripper: Gripper = DEFAULT_GRIPPER, spacing: float = 0.004
                    ) -> tuple[np.ndarray, np.ndarray]:
     """Grid points (K, 3) on the faces of every grasp's gripper boxes, object frame,
-    and the grasp index (K,) of each point."""
-    pts, gi = [], []
-    for k in range(len(width)):
-        g = _gripper_grid(gripper, round(float(width[k]), 6), spacing)
-        R = pose[k, :3, :3]
-        pts.append(g[:, :1] * R[:, 0] + g[:, 1:2] * R[:, 1] + g[:, 2:] * R[:, 2] + pose[k, :3, 3])
-        gi.append(np.full(len(g), k))
-    return np.concatenate(pts), np.concatenate(gi)
+    and the grasp index (K,) of each point (each grasp's points are contiguous)."""
+    G = len(width)
+    grids = [_gripper_grid(gripper, round(float(w), 6), spacing) for w in width]
+    count = np.array([g.shape[1] for g in grids], dtype=np.int64)
+    grasp = np.repeat(np.arange(G), count)
+    if not G:
+        return np.zeros((0, 3)), grasp
+    g = np.concatenate(grids, axis=1)  # (3, K) gripper-frame coordinates, grasp after grasp
+    # each point's R[j, 0], R[j, 1], R[j, 2], t[j] (j = 0, 1, 2): rows (12, K)
+    A = np.repeat(np.ascontiguousarray(pose[:, :3, :].reshape(G, 12).T), count, axis=1)
+    out = np.empty((3, len(grasp)))
+    for j in range(3):  # the sums of g[:, :1] * R[:, 0] + g[:, 1:2] * R[:, 1] + ..., in that order
+        out[j] = g[0] * A[4 * j] + g[1] * A[4 * j + 1] + g[2] * A[4 * j + 2] + A[4 * j + 3]
+    return np.ascontiguousarray(out.T), grasp
 
 
 @lru_cache(maxsize=256)
 def _gripper_grid(gripper: Gripper, width: float, spacing: float) -> np.ndarray:
+    """Coordinates (3, K) of :func:`box_surface_grid` on the gripper's boxes at
+    ``width`` (gripper frame, read-only)."""
     g, _ = box_surface_grid(gripper.boxes(width), spacing)
+    g = np.ascontiguousarray(g.T)
     g.flags.writeable = False
     return g
 
@@ -289,17 +310,21 @@ def gripper_clearance(obj, pose: np.ndarray, width: np.ndarray, qpos=None, gripp
     glo = np.minimum.reduceat(pts, start[:-1], axis=0) - CLEARANCE_RANGE
     ghi = np.maximum.reduceat(pts, start[:-1], axis=0) + CLEARANCE_RANGE
     table = obj.primitive_table
-    B = table.world_boxes(obj.link_poses(qpos))
+    L = obj.link_poses(qpos)
+    B = table.world_boxes(L)
     near = np.all((B[None, :, 0] <= ghi[:, None]) & (B[None, :, 1] >= glo[:, None]), axis=2)  # (G, N)
-    W = table.world_all(obj.link_poses(qpos))
+    W = table.world_all(L)
     geoms, params = primitive_params(obj)
     for k in np.flatnonzero(near.any(axis=0)):
         gs = np.flatnonzero(near[:, k])
-        idx = np.concatenate([np.arange(start[g], start[g + 1]) for g in gs])
+        n = start[gs + 1] - start[gs]
+        first = np.zeros(len(gs), dtype=np.int64)
+        np.cumsum(n[:-1], out=first[1:])
+        idx = np.arange(n.sum()) + np.repeat(start[gs] - first, n)  # the points of the grippers gs
         R, t = W[k, :, :3], W[k, :, 3]
-        d = geoms[k].sdf(params[k], (pts[idx] - t) @ R)
-        seg = np.concatenate([[0], np.cumsum(start[gs + 1] - start[gs])[:-1]])
-        out[gs] = np.minimum(out[gs], np.minimum.reduceat(d, seg))
+        x = (np.take(pts, idx, axis=0) - t) @ R  # take: faster than pts[idx], same rows
+        d = geoms[k].sdf(params[k], x)
+        out[gs] = np.minimum(out[gs], np.minimum.reduceat(d, first))
     return out
 
 

@@ -2,17 +2,24 @@
 
 from __future__ import annotations
 
-import json
-
 import numpy as np
 
 import artipg
+from artipg.export.jsontext import dumps_indented
 
 
 def _r(x, nd=6):
     """Round floats (nested lists) for a stable, compact JSON."""
+    t = type(x)
+    if t is float:  # the common types first
+        v = round(x, nd)
+        return 0.0 if v == 0 else v
+    if t is str or t is bool or t is int:
+        return x
+    if t is list and all(type(v) is float for v in x):
+        return [0.0 if v == 0 else v for v in (round(v, nd) for v in x)]
     if isinstance(x, np.ndarray) and x.dtype.kind == "f":
-        return (np.round(x, nd) + 0.0).tolist()  # + 0.0 turns -0.0 into 0.0
+        return (x.round(nd) + 0.0).tolist()  # + 0.0 turns -0.0 into 0.0
     if isinstance(x, (list, tuple, np.ndarray)):
         return [_r(v, nd) for v in x]
     if isinstance(x, (float, np.floating)):
@@ -36,13 +43,19 @@ def annotation_dict(obj, grasps=None) -> dict:
 
     frames = part_frames(obj)
     g = world_grasps(obj) if grasps is None else grasps
+    # arrays are rounded whole (element by element, as row by row); scalars one by one
+    # with Python's round, as before
+    pose, approach, open_dir = _r(g.pose), _r(g.approach), _r(g.open_dir)
+    joint_name = [j.name for j in obj.joints]
     by_part: dict[int, list] = {}
-    for k in range(len(g)):
-        by_part.setdefault(int(g.part[k]), []).append({
-            "pose": _r(g.pose[k]), "width": _r(g.width[k]), "approach": _r(g.approach[k]),
-            "open_dir": _r(g.open_dir[k]), "joint": obj.joints[g.joint[k]].name if g.joint[k] >= 0 else None,
-            "collision_free": bool(g.collision_free[k]),
+    for k, (part, width, joint, free) in enumerate(zip(g.part.tolist(), g.width.tolist(), g.joint.tolist(),
+                                                       g.collision_free.tolist())):
+        by_part.setdefault(part, []).append({
+            "pose": pose[k], "width": _r(width), "approach": approach[k], "open_dir": open_dir[k],
+            "joint": joint_name[joint] if joint >= 0 else None, "collision_free": bool(free),
         })
+    canonical, size, npcs_pose = _r(frames.canonical), _r(frames.size), _r(frames.pose)
+    scale = [_r(v) for v in np.asarray(frames.scale, dtype=float).tolist()]
     parts = []
     for i, part in enumerate(obj.parts):
         parts.append({
@@ -52,10 +65,10 @@ def annotation_dict(obj, grasps=None) -> dict:
             "semantic": part.semantic,
             "template": part.template,
             "actionable": part.actionable,
-            "pose": _r(frames.canonical[i]),
-            "size": _r(frames.size[i]),
-            "npcs_pose": _r(frames.pose[i]),
-            "npcs_scale": _r(frames.scale[i]),
+            "pose": canonical[i],
+            "size": size[i],
+            "npcs_pose": npcs_pose[i],
+            "npcs_scale": scale[i],
             "affordances": sorted(part.regions),
             "grasps": by_part.get(i, []),
         })
@@ -83,4 +96,6 @@ def annotation_dict(obj, grasps=None) -> dict:
 
 
 def annotation_text(obj, grasps=None) -> str:
-    return json.dumps(annotation_dict(obj, grasps), indent=1, sort_keys=False) + "\n"
+    """``annotation.json`` of ``obj``: :func:`annotation_dict` as JSON indented by one
+    space (the text of ``json.dumps(..., indent=1)``)."""
+    return dumps_indented(annotation_dict(obj, grasps), indent=1) + "\n"

@@ -16,6 +16,9 @@ cylinders, mass properties of the primitive's mesh for the other templates.
 
 from __future__ import annotations
 
+import struct
+from collections import OrderedDict
+
 import numpy as np
 import trimesh
 
@@ -26,8 +29,9 @@ from artipg.materials import CLASS_DENSITY, DEFAULT_CLASS, MATERIAL, density, ma
 
 def obj_text(vertices: np.ndarray, faces: np.ndarray) -> str:
     """Wavefront OBJ text of a triangle mesh (vertices (V, 3) metres, faces (F, 3))."""
-    v = ("v %.6f %.6f %.6f\n" * len(vertices)) % tuple(np.asarray(vertices, dtype=float).ravel())
-    f = ("f %d %d %d\n" * len(faces)) % tuple((np.asarray(faces, dtype=np.int64) + 1).ravel())
+    # Python floats and ints format about twice as fast as numpy scalars
+    v = ("v %.6f %.6f %.6f\n" * len(vertices)) % tuple(np.asarray(vertices, dtype=float).ravel().tolist())
+    f = ("f %d %d %d\n" * len(faces)) % tuple((np.asarray(faces, dtype=np.int64) + 1).ravel().tolist())
     return v + f
 
 
@@ -38,7 +42,7 @@ def link_visual_arrays(link, sections: int = 24) -> tuple[np.ndarray, np.ndarray
     n = 0
     for part in link.parts:
         for prim in part.primitives:
-            V, F = prim.geom.mesh_arrays(prim.params, sections)
+            V, F = primitive_mesh_arrays(prim.geom, prim.params, sections)
             T = part.pose @ prim.pose
             verts.append(V @ T[:3, :3].T + T[:3, 3])
             faces.append(F + n)
@@ -54,15 +58,94 @@ def link_visual_mesh(link, sections: int = 24) -> trimesh.Trimesh | None:
     return None if arrays is None else trimesh.Trimesh(*arrays, process=False)
 
 
-def link_collision_pieces(link):
-    """Convex collision pieces of ``link``: list of (CollisionPiece, pose (4, 4) in link frame)."""
+class PrimitiveCache:
+    """A bounded memo of a pure function of a primitive, ``fn(geom, params, *args)``.
+
+    Primitives repeat within an object (the handles of a chest of drawers, the legs of a
+    table) and a mesh serves the visual, the inertial and the collision hull, so their
+    export computes each result once. Keys are the template, the exact bytes of the
+    parameters as float64 (so that -0.0 and 0.0 stay apart) and ``args``; results are
+    shared: callers must not modify them.
+    """
+
+    def __init__(self, fn, maxsize: int = 512):
+        self.fn, self.maxsize = fn, maxsize
+        self.store: OrderedDict = OrderedDict()
+
+    def __call__(self, geom, params, *args):
+        try:  # parameters are a tuple of floats: packing them is the cheapest exact key
+            raw = struct.pack(f"{len(params)}d", *params)
+        except (TypeError, OverflowError, struct.error):
+            raw = np.asarray(params, dtype=float).tobytes()
+        key = (geom, raw, args)
+        store = self.store
+        out = store.get(key)
+        if out is None:
+            out = store[key] = self.fn(geom, params, *args)
+            while len(store) > self.maxsize:
+                try:
+                    store.popitem(last=False)
+                except KeyError:  # emptied by another thread meanwhile
+                    break
+        else:
+            try:
+                store.move_to_end(key)
+            except KeyError:  # evicted by another thread meanwhile: still a valid result
+                pass
+        return out
+
+
+def _readonly(*arrays):
+    """Mark the arrays (created by this module's memos) read-only; returns them."""
+    for a in arrays:
+        if isinstance(a, np.ndarray) and a.flags.writeable:
+            a.flags.writeable = False
+    return arrays
+
+
+def _mesh_arrays(geom, params, sections):
+    V, F = geom.mesh_arrays(params, sections)
+    return _readonly(np.array(V, dtype=float), np.array(F, dtype=np.int64))
+
+
+#: :meth:`GeometryTemplate.mesh_arrays` of a primitive, memoised (read-only arrays).
+primitive_mesh_arrays = PrimitiveCache(_mesh_arrays)
+
+
+def _collision(geom, params):
+    pieces = tuple(geom.collision(params))
+    for pc in pieces:  # poses may be shared constants (IDENTITY): left as they are
+        if pc.vertices is not None:
+            _readonly(pc.vertices, pc.faces)
+    return pieces
+
+
+#: :meth:`GeometryTemplate.collision` of a primitive, memoised (a tuple of pieces with
+#: read-only vertices and faces; the pieces of one primitive may share them).
+primitive_collision = PrimitiveCache(_collision)
+
+
+def link_collision_entries(link) -> list[tuple]:
+    """Convex collision pieces of ``link``: list of (CollisionPiece, pose (4, 4) in link
+    frame, index of the primitive in the link).
+
+    The pieces of one primitive may share one hull (the same vertex array, e.g. the
+    sectors of a ring); equal primitives share their memoised pieces too, so a writer
+    that writes each hull once must tell hulls apart by primitive index and array."""
     out = []
+    k = 0
     for part in link.parts:
         for prim in part.primitives:
             T = part.pose @ prim.pose
-            for piece in prim.geom.collision(prim.params):
-                out.append((piece, T @ piece.pose))
+            for piece in primitive_collision(prim.geom, prim.params):
+                out.append((piece, T @ piece.pose, k))
+            k += 1
     return out
+
+
+def link_collision_pieces(link):
+    """Convex collision pieces of ``link``: list of (CollisionPiece, pose (4, 4) in link frame)."""
+    return [(piece, T) for piece, T, _ in link_collision_entries(link)]
 
 
 def _box_inertia(sx: float, sy: float, sz: float) -> np.ndarray:
@@ -77,6 +160,11 @@ def primitive_mass_properties(geom, params, sections: int = 24) -> tuple[float, 
     Exact for boxes, rectangular frames, cylinders and full spheres; from the
     primitive's closed mesh otherwise.
     """
+    vol, c, I = _primitive_mass(geom, params, sections)
+    return vol, c.copy(), I.copy()
+
+
+def _mass_properties(geom, params, sections):
     p = tuple(float(v) for v in params)
     if geom is Cuboid:
         return p[0] * p[1] * p[2], np.zeros(3), _box_inertia(*p)
@@ -95,12 +183,20 @@ def primitive_mass_properties(geom, params, sections: int = 24) -> tuple[float, 
     if geom is Sphere and p[1] <= -p[0] and p[2] >= p[0]:
         R = p[0]
         return 4.0 / 3.0 * np.pi * R ** 3, np.zeros(3), np.eye(3) * (0.4 * R * R)
-    V, F = geom.mesh_arrays(geom.solid_params(p), sections=sections)
+    V, F = primitive_mesh_arrays(geom, geom.solid_params(p), sections)
     props = trimesh.triangles.mass_properties(V[F], density=1.0)
     vol = abs(float(props.volume))
     if vol <= 0:
         return 0.0, np.zeros(3), np.zeros((3, 3))
     return vol, np.asarray(props.center_mass), np.asarray(props.inertia) / props.mass
+
+
+def _mass(geom, params, sections):
+    vol, c, I = _mass_properties(geom, params, sections)
+    return (vol, *_readonly(np.array(c, dtype=float), np.array(I, dtype=float)))
+
+
+_primitive_mass = PrimitiveCache(_mass)
 
 
 def link_inertial(link, sections: int = 24, materials=None) -> tuple[float, np.ndarray, np.ndarray]:
@@ -111,27 +207,36 @@ def link_inertial(link, sections: int = 24, materials=None) -> tuple[float, np.n
     overlaps are counted twice, which is a small over-estimate for the few
     primitives that intersect.
     """
-    masses, coms, inertias = [], [], []
+    masses, props, part_poses, prim_poses = [], [], [], []
     for part in link.parts:
         rho = density(part.semantic, materials)
         for prim in part.primitives:
-            vol, c, I1 = primitive_mass_properties(prim.geom, prim.params, sections)
+            vol, c, I1 = _primitive_mass(prim.geom, prim.params, sections)
             if vol <= 0:
                 continue
-            T = part.pose @ prim.pose
-            mass = rho * vol
-            R = T[:3, :3]
-            masses.append(mass)
-            coms.append(R @ c + T[:3, 3])
-            inertias.append(mass * (R @ I1 @ R.T))
+            masses.append(rho * vol)
+            props.append((c, I1))
+            part_poses.append(part.pose)
+            prim_poses.append(prim.pose)
     if not masses:
         return 1e-3, np.zeros(3), np.eye(3) * 1e-6
+    # all primitives at once: stacked matmuls run the same product per matrix as one
+    # call per primitive, so the numbers are those of the loop they replace
+    m = np.array(masses)
+    T = np.stack(part_poses) @ np.stack(prim_poses)
+    R = T[:, :3, :3]
+    c = np.stack([cp[0] for cp in props])
+    I1 = np.stack([cp[1] for cp in props])
+    coms = (R @ c[:, :, None])[:, :, 0] + T[:, :3, 3]
+    inertias = m[:, None, None] * (R @ I1 @ R.transpose(0, 2, 1))
     M = float(sum(masses))
-    com = np.sum([m * c for m, c in zip(masses, coms)], axis=0) / M
+    com = np.sum(m[:, None] * coms, axis=0) / M
+    d = coms - com
+    dd = np.array([np.dot(di, di) for di in d])  # the dot products of the loop, one by one
+    terms = inertias + m[:, None, None] * (dd[:, None, None] * np.eye(3) - d[:, :, None] * d[:, None, :])
     I = np.zeros((3, 3))
-    for m, c, Ii in zip(masses, coms, inertias):
-        d = c - com
-        I += Ii + m * (np.dot(d, d) * np.eye(3) - np.outer(d, d))
+    for t in terms:  # summed in the same order
+        I += t
     # keep the tensor physically valid for engines that check the triangle inequality
     I = (I + I.T) / 2 + np.eye(3) * 1e-9
     return M, com, I

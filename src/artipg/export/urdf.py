@@ -11,12 +11,14 @@ import xml.etree.ElementTree as ET
 
 import numpy as np
 
-from artipg.export.meshes import link_collision_pieces, link_inertial, link_visual_arrays, obj_text
+from artipg.export.meshes import link_collision_entries, link_inertial, link_visual_arrays, obj_text
 from artipg.geometry.transforms import matrix_to_rpy
 
 
 def _fmt(v) -> str:
-    return " ".join(f"{float(x) + 0.0:.9g}" for x in v)  # + 0.0 turns -0 into 0
+    """Numbers of ``v`` with 9 significant digits, space separated (-0 written as 0)."""
+    x = v.tolist() if isinstance(v, np.ndarray) else [float(e) for e in v]
+    return " ".join(["%.9g"] * len(x)) % tuple([float(e) + 0.0 for e in x])  # + 0.0 turns -0.0 into 0.0
 
 
 def _origin(parent: ET.Element, T: np.ndarray) -> None:
@@ -68,8 +70,8 @@ def build_urdf(obj, sections: int = 24, visuals: bool = True) -> tuple[ET.Elemen
             vis = ET.SubElement(el, "visual", name=f"{link.name}_visual")
             _origin(vis, np.eye(4))
             ET.SubElement(ET.SubElement(vis, "geometry"), "mesh", filename=path)
-        written: dict[int, str] = {}
-        for k, (piece, T) in enumerate(link_collision_pieces(link)):
+        written: dict[tuple[int, int], str] = {}
+        for k, (piece, T, prim) in enumerate(link_collision_entries(link)):
             col = ET.SubElement(el, "collision", name=f"{link.name}_c{k}")
             _origin(col, T)
             geom = ET.SubElement(col, "geometry")
@@ -79,10 +81,10 @@ def build_urdf(obj, sections: int = 24, visuals: bool = True) -> tuple[ET.Elemen
                 ET.SubElement(geom, "cylinder", radius=f"{piece.size[0]:.9g}", length=f"{piece.size[1]:.9g}")
             elif piece.shape == "sphere":
                 ET.SubElement(geom, "sphere", radius=f"{piece.size[0]:.9g}")
-            else:  # pieces sharing one hull (sectors of a ring) share one file
-                path = written.get(id(piece.vertices))
+            else:  # pieces of a primitive sharing one hull (sectors of a ring) share one file
+                path = written.get((prim, id(piece.vertices)))
                 if path is None:
-                    path = written[id(piece.vertices)] = f"meshes/{link.name}_c{k}.obj"
+                    path = written[prim, id(piece.vertices)] = f"meshes/{link.name}_c{k}.obj"
                     files[path] = obj_text(piece.vertices, piece.faces)
                 ET.SubElement(geom, "mesh", filename=path)
     for j in obj.joints:

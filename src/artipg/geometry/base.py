@@ -256,20 +256,31 @@ def polygon_sdf(q: np.ndarray, poly: np.ndarray) -> np.ndarray:
 
     Negative inside (even-odd rule), exact for any simple polygon.
     """
+    return polygon_sdf_rows(q[:, 0], q[:, 1], poly)
+
+
+def polygon_sdf_rows(qx: np.ndarray, qy: np.ndarray, poly: np.ndarray) -> np.ndarray:
+    """:func:`polygon_sdf` of the 2-D points with coordinates ``qx``, ``qy`` (N,).
+
+    Works on (V, N) rows, which numpy runs several times faster than (N, V, 2) arrays;
+    every sum has two terms, so the result does not depend on the layout.
+    """
     a = poly
     b = np.roll(poly, -1, axis=0)
     e = b - a  # (V, 2)
-    w = q[:, None, :] - a[None]  # (N, V, 2)
+    ax, ay, ex, ey = a[:, 0:1], a[:, 1:2], e[:, 0:1], e[:, 1:2]  # (V, 1)
+    wx = qx[None, :] - ax
+    wy = qy[None, :] - ay
     ee = np.maximum((e * e).sum(axis=1), 1e-30)
-    t = np.clip((w * e[None]).sum(axis=2) / ee, 0.0, 1.0)
-    d = w - t[..., None] * e[None]
-    dist = np.sqrt((d * d).sum(axis=2).min(axis=1))
+    t = np.clip((wx * ex + wy * ey) / ee[:, None], 0.0, 1.0)
+    dx = wx - t * ex
+    dy = wy - t * ey
+    dist = np.sqrt((dx * dx + dy * dy).min(axis=0))
     # crossing-number inside test
-    ay, by = a[:, 1][None], b[:, 1][None]
-    qy, qx = q[:, 1:2], q[:, 0:1]
-    cond = (ay > qy) != (by > qy)
-    xint = a[:, 0][None] + (qy - ay) * e[:, 0][None] / np.where(np.abs(e[:, 1]) > 1e-30, e[:, 1], 1e-30)[None]
-    inside = (cond & (qx < xint)).sum(axis=1) % 2 == 1
+    qyr = qy[None, :]
+    cond = (ay > qyr) != (b[:, 1:2] > qyr)
+    xint = ax + (qyr - ay) * ex / np.where(np.abs(ey) > 1e-30, ey, 1e-30)
+    inside = (cond & (qx[None, :] < xint)).sum(axis=0) % 2 == 1
     return np.where(inside, -dist, dist)
 
 

@@ -55,6 +55,15 @@ def _frame_faces() -> np.ndarray:
 
 
 _FRAME_FACES = _frame_faces()
+
+
+def _box_rows_sdf(ax: np.ndarray, size) -> np.ndarray:
+    """Signed distance (N,) to a centred box of extents ``size`` (3,) of points given as
+    absolute coordinate rows ``ax`` (3, N) (rows: several times faster than (N, 3))."""
+    q = ax - (np.asarray(size, dtype=float) / 2.0)[:, None]
+    m = np.maximum(q, 0.0)
+    m *= m
+    return np.sqrt((m[0] + m[1]) + m[2]) + np.minimum(np.maximum(np.maximum(q[0], q[1]), q[2]), 0.0)
 _BOX_COMP = np.arange(6)
 # face areas sy sz, sx sz, sx sy: products of these parameter columns
 _FACE_I, _FACE_J = np.array([1, 0, 0]), np.array([2, 2, 1])
@@ -84,10 +93,7 @@ class Cuboid(GeometryTemplate):
 
     @classmethod
     def sdf(cls, p, x):
-        q = np.abs(x) - np.asarray(p, dtype=float) / 2.0
-        outside = np.linalg.norm(np.maximum(q, 0.0), axis=1)
-        inside = np.minimum(q.max(axis=1), 0.0)
-        return outside + inside
+        return _box_rows_sdf(np.abs(x.T, order="C"), p)
 
     @classmethod
     def bounds(cls, p):
@@ -140,9 +146,8 @@ class RectRing(GeometryTemplate):
     @classmethod
     def sdf(cls, p, x):
         ox, oy, d, ix, iy = p
-        outer = Cuboid.sdf((ox, oy, d), x)
-        hole = Cuboid.sdf((ix, iy, 4.0 * d + 1.0), x)
-        return np.maximum(outer, -hole)
+        ax = np.abs(x.T, order="C")
+        return np.maximum(_box_rows_sdf(ax, (ox, oy, d)), -_box_rows_sdf(ax, (ix, iy, 4.0 * d + 1.0)))
 
     @classmethod
     def bounds(cls, p):

@@ -7,7 +7,7 @@ import math
 
 import numpy as np
 
-from artipg.geometry.base import TWO_PI, GeometryTemplate, Primitive, polygon_sdf
+from artipg.geometry.base import TWO_PI, GeometryTemplate, Primitive, polygon_sdf_rows
 from artipg.geometry.patches import Patch, _cross_norm
 from artipg.geometry.transforms import IDENTITY
 
@@ -16,7 +16,8 @@ _SIDE_COMP, _END_COMP = np.array([0, 1, 2]), np.array([3, 4])
 
 
 def _extrusion_sdf(poly: np.ndarray, depth: float, x: np.ndarray) -> np.ndarray:
-    return np.maximum(polygon_sdf(x[:, :2], poly), np.abs(x[:, 2]) - depth / 2)
+    xt = np.ascontiguousarray(x.T)
+    return np.maximum(polygon_sdf_rows(xt[0], xt[1], poly), np.abs(xt[2]) - depth / 2)
 
 
 def _extrusion_arrays(poly: np.ndarray, depth: float) -> tuple[np.ndarray, np.ndarray]:

@@ -4,6 +4,7 @@ cylinder), sphere segment and torus, the last three optionally cut to an arc
 
 from __future__ import annotations
 
+import functools
 import math
 
 import numpy as np
@@ -15,7 +16,7 @@ from artipg.geometry.base import (
     GeometryTemplate,
     Primitive,
     disk,
-    polygon_sdf,
+    polygon_sdf_rows,
     wedge_sdf,
 )
 from artipg.geometry.patches import Patch, compile_linear, linear, rects, sectors
@@ -68,16 +69,48 @@ def revolve_arrays(profile, arc: float = FULL, sections: int = 32, cap_start: bo
     full = arc >= TWO_PI - 1e-9
     n_sec = max(2, int(math.ceil(sections * arc / TWO_PI)))
     n_th = n_sec if full else n_sec + 1
-    th = np.linspace(0.0, arc, n_sec + 1)[:n_th]
+    cos_th, sin_th, th = _section_angles(float(arc), n_sec, n_th)
     P = len(prof)
     rho, z = prof[:, 0], prof[:, 1]
     V = np.empty((n_th, P, 3))
-    V[..., 0] = rho[None, :] * np.cos(th)[:, None]
-    V[..., 1] = rho[None, :] * np.sin(th)[:, None]
+    V[..., 0] = rho[None, :] * cos_th
+    V[..., 1] = rho[None, :] * sin_th
     V[..., 2] = z[None, :]
-    # every section's copy of an on-axis profile vertex is replaced by the first one
+    verts = V.reshape(-1, 3)
+    caps, ccw = (False, False), False
+    if not full:
+        caps = (bool(cap_start), bool(cap_end))
+        # a counter-clockwise profile makes the fan (centre, v_k, v_k+1) face -θ at θ = 0
+        ccw = float(np.sum(prof[:, 0] * np.roll(prof[:, 1], -1) - np.roll(prof[:, 0], -1) * prof[:, 1])) > 0
+        centroid = prof.mean(axis=0)
+        extra = [[centroid[0] * math.cos(t), centroid[0] * math.sin(t), centroid[1]]
+                 for on, t in zip(caps, (th[0], th[n_th - 1])) if on]
+        verts = np.concatenate([verts, np.array(extra).reshape(-1, 3)])
+    used, F = _revolve_topology(P, tuple((rho <= 0.0).tolist()), n_sec, n_th, bool(closed_profile), caps, ccw)
+    return verts[used], F.copy()
+
+
+@functools.lru_cache(maxsize=64)
+def _section_angles(arc: float, n_sec: int, n_th: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Cosines (n_th, 1), sines (n_th, 1) and angles (n_th,) of the sections of
+    :func:`revolve_arrays` (read-only: they are shared)."""
+    th = np.linspace(0.0, arc, n_sec + 1)[:n_th]
+    out = np.cos(th)[:, None], np.sin(th)[:, None], th
+    for a in out:
+        a.flags.writeable = False
+    return out
+
+
+@functools.lru_cache(maxsize=256)
+def _revolve_topology(P: int, on_axis: tuple, n_sec: int, n_th: int, closed_profile: bool,
+                      caps: tuple[bool, bool], ccw: bool) -> tuple[np.ndarray, np.ndarray]:
+    """Which vertices (U,) of :func:`revolve_arrays`'s grid (``n_th`` sections of ``P``
+    profile vertices, then one centre per cap) are used, and the faces (F, 3) indexing
+    them: they depend only on the counts, the on-axis vertices and the caps, so a
+    template's meshes share them (read-only)."""
     idx = np.arange(n_th * P).reshape(n_th, P)
-    axis = rho <= 0.0
+    axis = np.array(on_axis, dtype=bool)
+    # every section's copy of an on-axis profile vertex is replaced by the first one
     idx[:, axis] = idx[0, axis]
     n_edges = P if closed_profile else P - 1
     i = np.arange(n_edges)
@@ -87,26 +120,21 @@ def revolve_arrays(profile, arc: float = FULL, sections: int = 32, cap_start: bo
     a, b = idx[j][:, i].ravel(), idx[j][:, i1].ravel()
     c, d = idx[j1][:, i1].ravel(), idx[j1][:, i].ravel()
     faces = [np.stack([a, c, b], 1), np.stack([a, d, c], 1)]
-    verts = V.reshape(-1, 3)
-    if not full:
-        # a counter-clockwise profile makes the fan (centre, v_k, v_k+1) face -θ at θ = 0
-        ccw = float(np.sum(prof[:, 0] * np.roll(prof[:, 1], -1) - np.roll(prof[:, 0], -1) * prof[:, 1])) > 0
-        centroid = prof.mean(axis=0)
-        extra = []
-        for on, jj, start in ((cap_start, 0, True), (cap_end, n_th - 1, False)):
-            if not on:
-                continue
-            t = th[jj]
-            cidx = len(verts) + len(extra)
-            extra.append([centroid[0] * math.cos(t), centroid[0] * math.sin(t), centroid[1]])
-            ring = idx[jj]
-            tri = np.stack([np.full(P, cidx), ring, np.roll(ring, -1)], 1)
-            faces.append(tri if start == ccw else tri[:, ::-1])
-        verts = np.concatenate([verts, np.array(extra).reshape(-1, 3)])
+    cidx = n_th * P
+    for on, jj, start in ((caps[0], 0, True), (caps[1], n_th - 1, False)):
+        if not on:
+            continue
+        ring = idx[jj]
+        tri = np.stack([np.full(P, cidx), ring, np.roll(ring, -1)], 1)
+        faces.append(tri if start == ccw else tri[:, ::-1])
+        cidx += 1
     F = np.concatenate(faces)
     F = F[(F[:, 0] != F[:, 1]) & (F[:, 1] != F[:, 2]) & (F[:, 0] != F[:, 2])]
     used, F = np.unique(F, return_inverse=True)
-    return verts[used], F.reshape(-1, 3).astype(np.int64)
+    F = F.reshape(-1, 3).astype(np.int64)
+    used.flags.writeable = False
+    F.flags.writeable = False
+    return used, F
 
 
 def revolve_mesh(profile, arc: float = FULL, sections: int = 32, cap_start: bool = True,
@@ -180,7 +208,7 @@ class Frustum(GeometryTemplate):
         if abs(p[0] - p[1]) <= 1e-12:  # cylinder: the 2-D box distance in (ρ, z)
             dx, dz = rho - p[0], np.abs(x[:, 2]) - p[2] / 2
             return np.hypot(np.maximum(dx, 0.0), np.maximum(dz, 0.0)) + np.minimum(np.maximum(dx, dz), 0.0)
-        return polygon_sdf(np.stack([rho, x[:, 2]], axis=1), cls._profile(p))
+        return polygon_sdf_rows(rho, np.ascontiguousarray(x[:, 2]), cls._profile(p))
 
     @classmethod
     def bounds(cls, p):
@@ -305,8 +333,8 @@ class Ring(GeometryTemplate):
 
     @classmethod
     def sdf(cls, p, x):
-        q = np.stack([np.hypot(x[:, 0], x[:, 1]), x[:, 2]], axis=1)
-        return np.maximum(polygon_sdf(q, cls._profile(p)), wedge_sdf(x, p[3]))
+        d = polygon_sdf_rows(np.hypot(x[:, 0], x[:, 1]), np.ascontiguousarray(x[:, 2]), cls._profile(p))
+        return np.maximum(d, wedge_sdf(x, p[3]))
 
     @classmethod
     def bounds(cls, p):
