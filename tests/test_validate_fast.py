@@ -405,17 +405,23 @@ def test_refinement_never_brings_distant_pieces_into_contact():
     assert (d3 > 2e-3).all()
 
 
+def _close_round_pairs(category, seed, pad):
+    """Pieces, rest poses and the pairs (a, b) of pieces of different parts whose boxes
+    are within ``pad`` and which are not both boxes (the pairs refinement handles)."""
+    kin, pieces = _pieces(artipg.generate(category, seed))
+    W = kin.poses()[pieces.link] @ pieces.T
+    c, h = world_boxes(pieces, W)
+    a, b = close_pairs(c, h, pad)
+    keep = ~(pieces.is_box[a] & pieces.is_box[b]) & (pieces.part[a] != pieces.part[b])
+    return pieces, W, a[keep], b[keep]
+
+
 @pytest.mark.parametrize("category", CATEGORIES)
 def test_refined_rest_distances_respect_the_bounding_boxes(category):
     """On real objects, pieces whose oriented bounding boxes are 5 mm or more apart
     are never within the floating tolerance (2 mm) after refinement."""
     for seed in SEEDS:
-        kin, pieces = _pieces(artipg.generate(category, seed))
-        W = kin.poses()[pieces.link] @ pieces.T
-        c, h = world_boxes(pieces, W)
-        a, b = close_pairs(c, h, 0.02)
-        keep = ~(pieces.is_box[a] & pieces.is_box[b]) & (pieces.part[a] != pieces.part[b])
-        a, b = a[keep], b[keep]
+        pieces, W, a, b = _close_round_pairs(category, seed, 0.02)
         if not len(a):
             continue
         far = _obb_gap(pieces, a, b, W[a], W[b]) >= 0.005
@@ -477,12 +483,7 @@ def test_refinement_evaluates_only_the_stencils_it_uses_bit_for_bit(category):
     the source, the source's stencil at the points on the target: the same bounds,
     bit for bit, as evaluating both stencils everywhere."""
     for seed in SEEDS:
-        kin, pieces = _pieces(artipg.generate(category, seed))
-        W = kin.poses()[pieces.link] @ pieces.T
-        c, h = world_boxes(pieces, W)
-        a, b = close_pairs(c, h, 0.01)
-        keep = ~(pieces.is_box[a] & pieces.is_box[b]) & (pieces.part[a] != pieces.part[b])
-        a, b = a[keep], b[keep]
+        pieces, W, a, b = _close_round_pairs(category, seed, 0.01)
         if not len(a):
             continue
         for kw in ({}, {"iters": 3, "stop_below": 2e-3}, {"starts": 1, "iters": 5}):
