@@ -30,6 +30,8 @@ def _box_tables():
 
 
 _BOX_TABLE = _box_tables()
+
+
 @functools.cache
 def _unit_box() -> tuple[np.ndarray, np.ndarray]:
     """Vertices (8, 3) and faces (12, 3) of trimesh's unit box (trimesh is imported only
@@ -64,6 +66,8 @@ def _box_rows_sdf(ax: np.ndarray, size) -> np.ndarray:
     m = np.maximum(q, 0.0)
     m *= m
     return np.sqrt((m[0] + m[1]) + m[2]) + np.minimum(np.maximum(np.maximum(q[0], q[1]), q[2]), 0.0)
+
+
 _BOX_COMP = np.arange(6)
 # face areas sy sz, sx sz, sx sy: products of these parameter columns
 _FACE_I, _FACE_J = np.array([1, 0, 0]), np.array([2, 2, 1])

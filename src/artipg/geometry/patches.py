@@ -75,7 +75,9 @@ def block(family: str, comp, area, *cols) -> Patch:
     return Patch(family, comp, area, params)
 
 
-def _cross_norm(a, b):
+def cross_norm(a, b):
+    """Length of the cross product of vectors ``a`` and ``b``, each a 3-tuple of columns
+    (arrays that broadcast, or scalars): the area of the parallelogram they span."""
     ax, ay, az = a
     bx, by, bz = b
     return np.sqrt((ay * bz - az * by) ** 2 + (az * bx - ax * bz) ** 2 + (ax * by - ay * bx) ** 2)
@@ -86,12 +88,12 @@ def rects(comp, o, a, b, n, scale=1.0) -> Patch:
 
     ``scale`` (0 or 1 per patch) switches patches off without changing their shape.
     """
-    return block("rect", comp, _cross_norm(a, b) * scale, *o, *a, *b, *n)
+    return block("rect", comp, cross_norm(a, b) * scale, *o, *a, *b, *n)
 
 
 def tris(comp, o, a, b, n, scale=1.0) -> Patch:
     """Triangles ``o + u a + v b``, u, v >= 0, u + v <= 1."""
-    return block("tri", comp, 0.5 * _cross_norm(a, b) * scale, *o, *a, *b, *n)
+    return block("tri", comp, 0.5 * cross_norm(a, b) * scale, *o, *a, *b, *n)
 
 
 def sectors(comp, c, a, b, n, r0, r1, arc, scale=1.0) -> Patch:

@@ -8,7 +8,7 @@ import math
 import numpy as np
 
 from artipg.geometry.base import TWO_PI, GeometryTemplate, Primitive, polygon_sdf_rows
-from artipg.geometry.patches import Patch, _cross_norm
+from artipg.geometry.patches import Patch, cross_norm
 from artipg.geometry.transforms import IDENTITY
 
 MAX_SIDES = 16
@@ -81,7 +81,7 @@ class Prism(GeometryTemplate):
             side[:, 8] = h
             side[:, 9] = np.cos(mid)
             side[:, 10] = np.sin(mid)
-            out.append(Patch("rect", np.zeros(n, dtype=np.int64), _cross_norm((dx, dy, 0.0), (0.0, 0.0, h)) * on,
+            out.append(Patch("rect", np.zeros(n, dtype=np.int64), cross_norm((dx, dy, 0.0), (0.0, 0.0, h)) * on,
                              side))
             # bottom then top fans: o (0, 0, ∓h/2), a (x0, y0, 0), b (x1, y1, 0), n (0, 0, ∓1)
             fan = np.zeros((2, n, 12, M))
@@ -93,7 +93,7 @@ class Prism(GeometryTemplate):
             fan[:, :, 7] = y1
             fan[0, :, 11] = -1.0
             fan[1, :, 11] = 1.0
-            area = 0.5 * _cross_norm((x0, y0, 0.0), (x1, y1, 0.0)) * on
+            area = 0.5 * cross_norm((x0, y0, 0.0), (x1, y1, 0.0)) * on
             out.append(Patch("tri", np.repeat(np.array([1, 2]), n), np.concatenate([area, area]),
                              fan.reshape(2 * n, 12, M)))
         return out
@@ -180,7 +180,7 @@ class TriPrism(GeometryTemplate):
         side[:, 8] = d
         np.divide(E[:, 1], L, out=side[:, 9])
         np.divide(-E[:, 0], L, out=side[:, 10])
-        sides = Patch("rect", _SIDE_COMP, _cross_norm((E[:, 0], E[:, 1], 0.0), (0.0, 0.0, d)), side)
+        sides = Patch("rect", _SIDE_COMP, cross_norm((E[:, 0], E[:, 1], 0.0), (0.0, 0.0, d)), side)
         # and of ``tris((3, 4), (V00, V01, ∓d/2), (E00, E01, 0), (-E20, -E21, 0), (0, 0, ∓1))``
         end = np.zeros((2, 12, M))
         end[:, 0:2] = V[0]
@@ -191,7 +191,7 @@ class TriPrism(GeometryTemplate):
         end[1, 6:8] = end[0, 6:8]
         end[0, 11] = -1.0
         end[1, 11] = 1.0
-        area = 0.5 * _cross_norm((E[0, 0], E[0, 1], 0.0), (-E[2, 0], -E[2, 1], 0.0))
+        area = 0.5 * cross_norm((E[0, 0], E[0, 1], 0.0), (-E[2, 0], -E[2, 1], 0.0))
         return [sides, Patch("tri", _END_COMP, np.array([area, area]), end)]
 
     @classmethod
