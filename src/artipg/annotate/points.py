@@ -20,6 +20,8 @@ from artipg.vocabulary import SEMANTIC_LABELS, label_id
 
 #: Stream key of point sampling (``seed`` is the sampling seed, not the object's).
 SAMPLING_STREAM = 0x5A3D1E
+#: Family code of each patch family: its position in :data:`FAMILIES` (sampling order).
+FAMILY_CODE = {name: i for i, name in enumerate(FAMILIES)}
 
 
 def transform_boxes(boxes: np.ndarray, W: np.ndarray) -> np.ndarray:
@@ -200,6 +202,19 @@ class PrimitiveTable:
         return np.concatenate([f.prim for f in fams]) if len(fams) != 1 else fams[0].prim
 
     @cached_property
+    def cell_rows(self) -> tuple[np.ndarray, np.ndarray]:
+        """Family code (K,) and parameters (K, 15) of every patch cell, one row per cell
+        (zero-padded past the family's parameter count): the draw kernel's layout."""
+        fams = self.families
+        K = fams[-1].stop if fams else 0
+        code = np.empty(K, dtype=np.int64)
+        Q = np.zeros((K, max(FAMILIES.values())))
+        for f in fams:
+            code[f.start:f.stop] = FAMILY_CODE[f.name]
+            Q[f.start:f.stop, :len(f.params)] = f.params.T
+        return code, Q
+
+    @cached_property
     def cell_p(self) -> np.ndarray:
         """Multinomial probabilities (K,) of the cells: proportional to area."""
         return self.cell_areas / self.cell_areas.sum()
@@ -282,6 +297,9 @@ class PointCloud:
     link_names: tuple
 
 
+_NO_TORUS = np.empty((6, 0))
+
+
 def sample_points(obj, n: int = 2048, seed: int = 0, qpos=None, parts=None) -> PointCloud:
     """Sample ``n`` area-uniform labelled surface points of ``obj`` at ``qpos``.
 
@@ -300,47 +318,39 @@ def sample_points(obj, n: int = 2048, seed: int = 0, qpos=None, parts=None) -> P
     parts : sequence of int, optional
         Sample only the surfaces of these parts (instance ids), area-uniformly.
     """
+    from artipg.annotate.draw import draw_kernel  # numba: loaded with the first draw
+
+    table = obj.primitive_table
+    L = obj.link_poses(qpos)
+    cell_p = table.cell_p if parts is None else table.part_cell_p(parts)
+    code, Q = table.cell_rows
+    torus = table.families[-1] if table.families and table.families[-1].name == "torus" else None
     with streams(seed) as st:
         rng = st.open(SAMPLING_STREAM)
-        table = obj.primitive_table
-        L = obj.link_poses(qpos)
-        cell_p = table.cell_p if parts is None else table.part_cell_p(parts)
         counts = rng.multinomial(n, cell_p)
-        # points in cell order first: the cell of each, and its local point and normal
-        cell = np.repeat(np.arange(len(counts)), counts)
-        local = np.empty((6, n))
-        fams = table.families
-        ends = counts.cumsum()[[f.stop - 1 for f in fams]].tolist()
-        s = 0
-        for f, e in zip(fams, ends):
-            if e > s:
-                rows = cell[s:e] - f.start if f.start else cell[s:e]
-                sample_family(f.name, f.params.take(rows, axis=1), rng, out=local[:, s:e])
-                s = e
+        # the families' draws in sampling order: two uniforms per point of the families
+        # before the torus (one block each, which is one block for all), then the torus
+        # rejection draws, then the shuffle
+        n_torus = int(counts[torus.start:].sum()) if torus is not None else 0
+        U = rng.random(2 * (n - n_torus))
+        if n_torus:
+            rows = np.repeat(np.arange(torus.stop - torus.start), counts[torus.start:])
+            torus_local = sample_family("torus", torus.params.take(rows, axis=1), rng)
+        else:
+            torus_local = _NO_TORUS
         perm = rng.permutation(n)
-        prim = table.cell_prim.take(cell.take(perm))
-        x, y, z, nx, ny, nz = local.take(perm, axis=1)
-        # one gathered transform, three coordinates at a time: G rows 3j..3j+2 hold
-        # column j of every point's (3, 4) pose, so a point is G0 x + G1 y + G2 z + G3
-        # (summed in that order) and a normal G0 nx + G1 ny + G2 nz
-        G = np.ascontiguousarray(table.world_all(L).transpose(2, 1, 0).reshape(12, -1)).take(prim, axis=1)
-        pts = np.empty((n, 3))
-        nrm = np.empty((n, 3))
-        acc = G[0:3] * x
-        tmp = G[3:6] * y
-        acc += tmp
-        acc += np.multiply(G[6:9], z, out=tmp)
-        np.add(acc, G[9:12], out=pts.T)
-        np.multiply(G[0:3], nx, out=acc)
-        acc += np.multiply(G[3:6], ny, out=tmp)
-        np.add(acc, np.multiply(G[6:9], nz, out=tmp), out=nrm.T)
-        part = table.prim_part.take(prim)
+    pts = np.empty((n, 3))
+    nrm = np.empty((n, 3))
+    labels = np.empty((4, n), dtype=np.int64)
+    prim, part, semantic, link = labels
+    draw_kernel(counts, code, Q, U, torus_local, perm, table.world_all(L), table.cell_prim, table.prim_part,
+                table.prim_link, table.part_semantic, pts, nrm, prim, part, semantic, link)
     return PointCloud(
         points=pts,
         normals=nrm,
-        semantic=table.part_semantic.take(part),
+        semantic=semantic,
         instance=part,
-        link=table.prim_link.take(prim),
+        link=link,
         primitive=prim,
         semantic_names=SEMANTIC_LABELS,
         instance_names=tuple(p.name for p in obj.parts),
