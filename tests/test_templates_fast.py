@@ -1,0 +1,48 @@
+"""Shortcuts in the category rules and part templates: each gives exactly what the
+plain computation it replaces gives (the same bits), or skips it only where it cannot
+change the result."""
+
+from __future__ import annotations
+
+import itertools
+
+import numpy as np
+import pytest
+
+from artipg.rules import ParamRecorder
+from artipg.templates.handles import FRONT_HANDLES, MAX_HALF_WIDTH
+
+
+def _half_width(part) -> float:
+    return float(np.abs(part.bounds()[:, 1]).max())
+
+
+@pytest.mark.parametrize("template", list(FRONT_HANDLES), ids=lambda t: t.__name__)
+def test_front_handles_stay_within_max_half_width(template):
+    rec = ParamRecorder(np.random.default_rng(0))
+    template(rec, length=0.1)
+    names = [k for k, p in rec.record.items() if p.kind == "uniform"]
+    widest = 0.0
+    # every corner of the parameter box (overrides are clamped into each range) ...
+    for corner in itertools.product((-1e9, 1e9), repeat=len(names)):
+        for length in (0.02, 0.35):
+            part = template(ParamRecorder(np.random.default_rng(0), overrides=dict(zip(names, corner))), length=length)
+            widest = max(widest, _half_width(part))
+    # ... and random draws
+    for seed in range(200):
+        widest = max(widest, _half_width(template(ParamRecorder(np.random.default_rng(seed)), length=0.2)))
+    assert 0.0 < widest <= MAX_HALF_WIDTH
+
+
+@pytest.mark.parametrize("k", [1, 2, 3, 4, 5])
+def test_storage_furniture_split_is_the_numpy_cumsum(k):
+    from artipg.categories.storage_furniture import _split
+
+    for seed in range(300):
+        rng = np.random.default_rng(seed)
+        start, total = rng.uniform(-1.0, 1.0), rng.uniform(0.1, 2.0)
+        got = _split(ParamRecorder(np.random.default_rng(seed)), "w", start, total, k)
+        p = ParamRecorder(np.random.default_rng(seed))
+        w = np.array([p.uniform(f"w{i}", 0.6, 1.4) for i in range(k)])
+        want = start + np.concatenate([[0.0], np.cumsum(w / w.sum() * total)])
+        assert np.array_equal(np.array(got), want)
