@@ -9,8 +9,11 @@ import itertools
 import numpy as np
 import pytest
 
+import artipg
 from artipg.rules import ParamRecorder
+from artipg.templates.extents import bound
 from artipg.templates.handles import FRONT_HANDLES, MAX_HALF_WIDTH
+from artipg.templates.office import ARMS, arm_top
 
 
 def _half_width(part) -> float:
@@ -46,3 +49,25 @@ def test_storage_furniture_split_is_the_numpy_cumsum(k):
         w = np.array([p.uniform(f"w{i}", 0.6, 1.4) for i in range(k)])
         want = start + np.concatenate([[0.0], np.cumsum(w / w.sum() * total)])
         assert np.array_equal(np.array(got), want)
+
+
+@pytest.mark.parametrize("category", artipg.categories())
+def test_bound_is_the_part_bounds(category):
+    for seed in range(3):
+        for link in artipg.generate(category, seed).links:
+            for part in link.parts:
+                b = part.bounds()
+                for axis in range(3):
+                    for upper in (False, True):
+                        assert bound(part.primitives, axis, upper) == b[int(upper), axis]
+
+
+@pytest.mark.parametrize("template", list(ARMS), ids=lambda t: t.__name__)
+def test_stapler_arm_top_is_the_bounds_top(template):
+    for seed in range(200):
+        rng = np.random.default_rng(seed)
+        radius, axle = rng.uniform(0.005, 0.013), rng.uniform(0.0015, 0.0025)
+        y0 = rng.uniform(0.0075, 0.018)
+        part = template(ParamRecorder(rng), rng.uniform(0.07, 0.45), 2 * y0, radius, rng.uniform(0.001, 0.003),
+                        (y0, y0 + rng.uniform(0.0015, 0.0022)), axle, rng.uniform(0.001, 0.002))
+        assert arm_top(part) == part.bounds()[1, 2]
