@@ -1,11 +1,12 @@
 """One coordinate of a part's bounding box, for rules that need only that.
 
 :meth:`artipg.model.part.Part.bounds` transforms the eight corners of every
-primitive's box with numpy, tens of microseconds a part. A rule that needs one side of
-it (how high an arm rises, how far a lever reaches) calls :func:`bound` instead: a
-cuboid whose pose keeps the asked axis (that row of its rotation is the unit vector)
-spans its pose's offset plus or minus half its size along it, the very sum the corner
-transform makes, so the result is the same float; other primitives use their bounds.
+primitive's local box with numpy, tens of microseconds a part. A rule that needs one
+side of it (how high an arm rises, how far a lever reaches) calls :func:`bound`
+instead. Where a primitive's pose keeps the asked axis (that row of its rotation is
+the unit vector), its extent along it is its pose's offset plus its local box's, the
+very sums the corner transform makes, so the result is the same float; other
+primitives use their bounds.
 """
 
 from __future__ import annotations
@@ -19,11 +20,15 @@ def bound(prims, axis: int, upper: bool) -> float:
     ``part.bounds()[int(upper), axis]``."""
     out = None
     for prim in prims:
-        T = prim.pose
-        row = T[axis]
-        if prim.geom is Cuboid and row[axis] == 1.0 and row[axis - 1] == 0.0 and row[axis - 2] == 0.0:
-            h = prim.params[axis] / 2
-            v = float(row[3] + h if upper else row[3] - h)
+        row = prim.pose[axis].tolist()
+        if row[axis] == 1.0 and row[axis - 1] == 0.0 and row[axis - 2] == 0.0:
+            if prim.geom is Cuboid:
+                hi = prim.params[axis] / 2
+                lo = -hi
+            else:
+                lo, hi = prim.geom.bounds(prim.params)[:, axis].tolist()
+            # corners at lo and lo + (hi - lo), as Primitive.bounds places them
+            v = row[3] + (lo + (hi - lo)) if upper else row[3] + lo
         else:
             v = float(prim.bounds()[int(upper), axis])
         if out is None or (v > out if upper else v < out):
