@@ -71,3 +71,19 @@ def test_stapler_arm_top_is_the_bounds_top(template):
         part = template(ParamRecorder(rng), rng.uniform(0.07, 0.45), 2 * y0, radius, rng.uniform(0.001, 0.003),
                         (y0, y0 + rng.uniform(0.0015, 0.0022)), axle, rng.uniform(0.001, 0.002))
         assert arm_top(part) == part.bounds()[1, 2]
+
+
+def test_cookware_grasp_frame_is_the_numpy_cross_product():
+    from artipg.templates.cookware import _grasp
+
+    rng = np.random.default_rng(0)
+    for _ in range(2000):
+        a, j = rng.normal(size=3), rng.normal(size=3)
+        a[rng.integers(3)] = 0.0  # the templates' axes have zero components
+        a, j = tuple((a / np.linalg.norm(a)).tolist()), tuple((j / np.linalg.norm(j)).tolist())
+        x, y, z = rng.normal(size=3).tolist()
+        T = np.eye(4)
+        T[:3, 1], T[:3, 2] = j, a
+        T[:3, 0] = np.cross(T[:3, 1], T[:3, 2])
+        T[:3, 3] = x, y, z
+        assert _grasp(x, y, z, a, j, 0.03).pose.tobytes() == T.tobytes()

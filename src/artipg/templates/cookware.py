@@ -36,10 +36,9 @@ _LIFT.flags.writeable = False
 def _grasp(x: float, y: float, z: float, approach, jaw, width: float) -> Grasp:
     """A grasp at (x, y, z) (part frame) approaching along the unit vector ``approach``
     with the jaws closing along the unit vector ``jaw`` (perpendicular to it)."""
-    T = np.eye(4)
-    T[:3, 1], T[:3, 2] = jaw, approach
-    T[:3, 0] = np.cross(T[:3, 1], T[:3, 2])
-    T[:3, 3] = x, y, z
+    (jx, jy, jz), (ax, ay, az) = jaw, approach
+    T = np.array(((jy * az - jz * ay, jx, ax, x), (jz * ax - jx * az, jy, ay, y), (jx * ay - jy * ax, jz, az, z),
+                  (0.0, 0.0, 0.0, 1.0)))  # x axis: jaw x approach
     return Grasp(T, width, _LIFT)
 
 
