@@ -87,3 +87,16 @@ def test_cookware_grasp_frame_is_the_numpy_cross_product():
         T[:3, 0] = np.cross(T[:3, 1], T[:3, 2])
         T[:3, 3] = x, y, z
         assert _grasp(x, y, z, a, j, 0.03).pose.tobytes() == T.tobytes()
+
+
+def test_spout_outlet_direction_is_the_numpy_normalisation():
+    from artipg.templates.spouts import _spout
+
+    rng = np.random.default_rng(0)
+    for i in range(5000):
+        a = rng.uniform(-np.pi, np.pi)
+        d = (np.cos(a), 0.0, np.sin(a)) if i % 2 else tuple(rng.uniform(-2, 2) * np.array([np.cos(a), 0.0, np.sin(a)]))
+        d = tuple(float(v) for v in d)
+        want = np.asarray(d) / np.linalg.norm(np.asarray(d))
+        got = _spout("arc_spout", [], (0.0, 0.0, 0.0), d).anchors["outlet_dir"]
+        assert np.array(got).tobytes() == want.tobytes()
