@@ -20,7 +20,7 @@ from dataclasses import replace
 
 from artipg.geometry.transforms import rot_y, rot_z, translation
 from artipg.rules import Category, Slot
-from artipg.templates.extents import bound
+from artipg.templates.extents import span
 from artipg.templates.levers import VALVE_HANDLES, joystick_lever, side_lever
 from artipg.templates.spouts import (COLLAR_SPOUTS, DECKS, TOP_SPOUTS, arc_spout, column, gooseneck_spout, rect_deck,
                                      spray_head)
@@ -81,7 +81,7 @@ def levers(ctx):
             link = b.create_link("lever", root)
             link.set_joint("revolute", T, axis=(0.0, 0.0, -s), limits=(0.0, turn))
             link.add(replace(h0))
-        return valves[0][0][2, 3] + bound(h0.primitives, 2, upper=True) - top[2, 3]  # handle tops above the spout hub
+        return valves[0][0][2, 3] + span(h0.primitives, 2)[1] - top[2, 3]  # handle tops above the spout hub
     lv = side_lever(p)
     zm = -p.uniform("lever_drop", 0.012, 0.025)
     link = b.create_link("lever", root)

@@ -14,13 +14,12 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
-
 from artipg.geometry import RectRing, cuboid_between
 from artipg.geometry.transforms import translation
 from artipg.model.part import Part
 from artipg.rules import Category, Slot
 from artipg.templates.bodies import carcass
+from artipg.templates.extents import span
 from artipg.templates.handles import FRONT_HANDLES, MAX_HALF_WIDTH, knob_pull
 from artipg.templates.mounting import free_edge_yz, front_thickness, handle_pose, mount_hinged, mount_sliding
 from artipg.templates.panels import DOORS, DRAWERS, shelf_board
@@ -156,7 +155,8 @@ def fronts(ctx):
                 # stile narrower than the widest handle needs this handle's bounds
                 margin = min(m, _stile(door) / 2)
                 if margin < MAX_HALF_WIDTH + 0.0015:
-                    margin = max(margin, float(np.abs(h.bounds()[:, 1]).max()) + 0.0015)
+                    ya, yb = span(h.primitives, 1)
+                    margin = max(margin, max(abs(ya), abs(yb)) + 0.0015)
                 hy, hz = free_edge_yz(side, (w, size[1]), margin)
                 link.add(h, handle_pose(door.pose, front_thickness(door), hy, hz, False))
 

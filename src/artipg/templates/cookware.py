@@ -21,7 +21,7 @@ from artipg.geometry import cuboid, cuboid_between, cylinder, rect_ring, torus, 
 from artipg.geometry.transforms import rot_x, rot_y, translation
 from artipg.geometry.tube import arc, line
 from artipg.model.part import Grasp, Part, Region
-from artipg.templates.extents import bound
+from artipg.templates.extents import span
 from artipg.templates.handles import arch_handle
 from artipg.templates.lids import flat_lid
 from artipg.templates.levers import top_grasp
@@ -161,7 +161,7 @@ def arch_lug(p, radius: float) -> Part:
     part.primitives = [pr.placed(T) for pr in part.primitives]
     part.grasps = [Grasp(T @ g.pose, g.width, _LIFT) for g in part.grasps]
     part.template = "arch_lug"
-    part.anchors["clear"] = (0.0, 0.0, bound(part.primitives, 2, upper=True))
+    part.anchors["clear"] = (0.0, 0.0, span(part.primitives, 2)[1])
     return part
 
 
