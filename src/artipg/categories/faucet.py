@@ -34,6 +34,7 @@ SUBS = {
 }
 SPOUTS = {"pull_out": {gooseneck_spout: 2.0, arc_spout: 1.0}, "gooseneck": {gooseneck_spout: 1.0}}  # else TOP_SPOUTS
 C = 0.006  # clearance between parts that move past each other
+SWIVELS = {"fixed": 1.0, "revolute": 1.0, "continuous": 0.6}
 
 
 def base(ctx):
@@ -104,7 +105,7 @@ def spout(ctx):
         rise = p.uniform("rise", *SUBS[ctx.sub][2])
         sp = ctx.choose("template", SPOUTS.get(ctx.sub, TOP_SPOUTS))(p.scope("tube"), radius=r, low=low, rise=rise)
         origin = top
-    kind = p.choice("swivel", {"fixed": 1.0, "revolute": 1.0, "continuous": 0.6})
+    kind = p.choice("swivel", SWIVELS)
     if kind == "fixed":
         root.add(sp, origin)
         return root, origin, sp, r

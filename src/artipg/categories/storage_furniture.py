@@ -33,6 +33,7 @@ SIZES = {
     "wardrobe": ((0.8, 1.8), (0.5, 0.65), (1.7, 2.2), (2, 3), (1, 2), 0.2),
     "sideboard": ((1.2, 2.0), (0.4, 0.5), (0.7, 0.9), (3, 4), (1, 3), 0.5),
 }
+ONE_HANDLE = {h: {h: 1.0} for h in FRONT_HANDLES}  # every front takes the same handle design
 
 
 def support(ctx):
@@ -90,7 +91,7 @@ def fronts(ctx):
     ybs = _split(p, "col_w", lo[1], W, nc)
     gap = p.uniform("gap", 0.002, 0.004)
     hinge_lim = p.uniform("door_limit", 1.5, 2.1)
-    handles = FRONT_HANDLES if p.flag("mixed_handles", 0.2) else {ctx.choose("handle", FRONT_HANDLES): 1.0}
+    handles = FRONT_HANDLES if p.flag("mixed_handles", 0.2) else ONE_HANDLE[ctx.choose("handle", FRONT_HANDLES)]
     k = 0
     for c in range(nc):
         y0, y1 = ybs[c], ybs[c + 1]
