@@ -99,3 +99,29 @@ def test_spout_outlet_direction_is_the_numpy_normalisation():
         want = np.asarray(d) / np.linalg.norm(np.asarray(d))
         got = _spout("arc_spout", [], (0.0, 0.0, 0.0), d).anchors["outlet_dir"]
         assert np.array(got).tobytes() == want.tobytes()
+
+
+def test_choices_take_constant_option_sets():
+    # a dict, a list or a tuple of variables is a new object per call: it misses the
+    # recorder's option cache (keyed by identity) and fills it; weights belong in module
+    # constants (a tuple of literals is one constant object)
+    import ast
+    import pathlib
+
+    def fresh(node):
+        if isinstance(node, ast.Tuple):
+            try:
+                ast.literal_eval(node)
+            except ValueError:
+                return True
+            return False
+        return isinstance(node, (ast.Dict, ast.List, ast.Set, ast.DictComp, ast.ListComp, ast.SetComp))
+
+    src = pathlib.Path(artipg.__file__).parent
+    bad = []
+    for path in sorted([*src.glob("categories/*.py"), *src.glob("templates/*.py")]):
+        for node in ast.walk(ast.parse(path.read_text())):
+            if (isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute)
+                    and node.func.attr in ("choice", "choose") and len(node.args) > 1 and fresh(node.args[1])):
+                bad.append(f"{path.name}:{node.lineno}")
+    assert not bad, bad
