@@ -28,7 +28,7 @@ SUBS = {
     "prism_bucket": (prism_shell, (0.18, 0.38), (0.11, 0.2), 0.3),
     "paint_pail": (cylindrical_shell, (0.15, 0.24), (0.1, 0.14), 0.9),
 }
-ONLY = {t: {t: 1.0} for t in (cylindrical_shell, tapered_shell, prism_shell)}  # a sure (recorded) choice
+ONLY = {t: {t: 1.0} for t in (cylindrical_shell, tapered_shell, prism_shell)}  # one body each, still recorded
 
 
 def body(ctx):
