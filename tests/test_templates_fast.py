@@ -125,3 +125,20 @@ def test_choices_take_constant_option_sets():
                     and node.func.attr in ("choice", "choose") and len(node.args) > 1 and fresh(node.args[1])):
                 bad.append(f"{path.name}:{node.lineno}")
     assert not bad, bad
+
+
+def test_control_poses_are_the_translation_products():
+    from artipg.geometry.transforms import translation
+    from artipg.templates.controls import _ALONG_MX, _ALONG_X, BUTTONS, _x_disc, button_bezel
+
+    rng = np.random.default_rng(0)
+    for seed in range(500):
+        x0 = -rng.uniform(0.0, 0.02) if seed % 3 else 0.0
+        x1 = x0 - rng.uniform(0.001, 0.03)
+        disc = _x_disc(0.01, 0.008, x0, x1, "grip")
+        assert disc.pose.tobytes() == (translation((x0 + x1) / 2, 0, 0) @ _ALONG_MX).tobytes()
+        for button in BUTTONS:
+            bezel = button_bezel(ParamRecorder(np.random.default_rng(seed)),
+                                 button(ParamRecorder(np.random.default_rng(seed))))
+            depth = -bezel.anchors["front"][0]
+            assert bezel.primitives[0].pose.tobytes() == (translation(-depth / 2, 0, 0) @ _ALONG_X).tobytes()
