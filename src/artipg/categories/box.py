@@ -38,6 +38,8 @@ SIZES = {"hinged_box": ((0.55, 0.8), (0.12, 0.4), (0.05, 0.2), (0.006, 0.015)),
 LIDS = {"hinged_box": HINGED_LIDS, "chest": {slab_lid: 2.0, raised_lid: 1.0}, "double_lid_box": {slab_lid: 2.0,
                                                                                               raised_lid: 1.0}}
 KNOBS = {knob_pull: 2.0, ball_knob_pull: 1.0, arch_handle: 1.0}
+ROUND_KNOBS = {knob_pull: 1.0, ball_knob_pull: 1.0}
+SIDE_HANDLES = {arch_handle: 1.0, flat_bar_handle: 1.0}
 
 
 def body(ctx):
@@ -103,7 +105,7 @@ def _sliding(ctx, root, part, D, W, lid_t):
     link = mount_sliding(ctx.builder, root, lid, origin=translation(-D / 2, 0, zg + 0.001),
                          limits=(0.0, p.uniform("travel", 0.6, 0.85) * L), name="lid")
     if p.flag("has_knob", 0.5):
-        k = ctx.choose("knob", {knob_pull: 1.0, ball_knob_pull: 1.0})(p.scope("knob"))
+        k = ctx.choose("knob", ROUND_KNOBS)(p.scope("knob"))
         link.add(k, translation(0.15 * L, 0, lid_t) @ rot_y(math.pi / 2))
     else:
         link.add(Part("handle", "finger_ridge", [cuboid_between((0.04 * L, -0.3 * Wl, lid_t), (0.04 * L + 0.006,
@@ -121,7 +123,7 @@ def extras(ctx):
         plate = cuboid_between((x - 0.003, -cw / 2, -ch), (x, cw / 2, 0.8 * lid.anchor("top")[2]), role="grip")
         link.add(Part("handle", "clasp", [plate], regions={"lift": Region(("grip",))}))
     if ctx.sub == "chest" and p.flag("side_handles", 0.6):
-        tmpl = ctx.choose("side_handle", {arch_handle: 1.0, flat_bar_handle: 1.0})
+        tmpl = ctx.choose("side_handle", SIDE_HANDLES)
         hl = p.uniform("side_handle_length", 0.1, 0.16)
         for i, s in enumerate((1.0, -1.0)):
             pose = translation(0, s * W / 2, top - 0.12) @ rot_z(-s * math.pi / 2) @ rot_x(math.pi / 2)

@@ -28,6 +28,7 @@ SUBS = {
     "prism_bucket": (prism_shell, (0.18, 0.38), (0.11, 0.2), 0.3),
     "paint_pail": (cylindrical_shell, (0.15, 0.24), (0.1, 0.14), 0.9),
 }
+ONLY = {t: {t: 1.0} for t in (cylindrical_shell, tapered_shell, prism_shell)}  # one body each, still recorded
 
 
 def body(ctx):
@@ -40,7 +41,7 @@ def body(ctx):
         kw["taper"] = p.uniform("taper", 0.08, 0.25)
     elif tmpl is prism_shell:
         kw["sides"] = p.integers("sides", 4, 8)
-    part = root.add(ctx.choose("body", {tmpl: 1.0})(p.scope("shell"), R, H, **kw))
+    part = root.add(ctx.choose("body", ONLY[tmpl])(p.scope("shell"), R, H, **kw))
     taper = kw.get("taper", 0.0) * R
     n = kw.get("sides")
 

@@ -32,6 +32,7 @@ from artipg.model.part import Part, Region
 from artipg.rules import Category, Slot
 from artipg.templates.chair_frames import (column_stool_base, folding_frame, folding_rear_legs, leg_stool_frame,
                                            post_arms, ring_back)
+from artipg.templates.extents import span
 from artipg.templates.seating import BACKS, CASTERS, SEATS, STOOL_SEATS, paddle_lever, star_base, wheel
 from artipg.templates.supports import round_legs, square_legs, tapered_legs
 
@@ -46,7 +47,7 @@ def _box(lo, hi, role="frame"):
 def _lever(ctx, link, p, x, y, z, clearance):
     """Paddle lever on the -y face y = ``y`` of ``link``; ``clearance`` = free height above its bar."""
     part = paddle_lever(p)
-    reach = -part.bounds()[0][1]
+    reach = -span(part.primitives, 1)[0]
     lk = ctx.builder.create_link("lever", link)
     lk.set_joint("revolute", translation(x, y, z), axis=(-1, 0, 0),
                  limits=(0.0, min(0.35, math.asin((clearance - 0.004) / reach))))

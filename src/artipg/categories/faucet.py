@@ -20,6 +20,7 @@ from dataclasses import replace
 
 from artipg.geometry.transforms import rot_y, rot_z, translation
 from artipg.rules import Category, Slot
+from artipg.templates.extents import span
 from artipg.templates.levers import VALVE_HANDLES, joystick_lever, side_lever
 from artipg.templates.spouts import (COLLAR_SPOUTS, DECKS, TOP_SPOUTS, arc_spout, column, gooseneck_spout, rect_deck,
                                      spray_head)
@@ -33,6 +34,7 @@ SUBS = {
 }
 SPOUTS = {"pull_out": {gooseneck_spout: 2.0, arc_spout: 1.0}, "gooseneck": {gooseneck_spout: 1.0}}  # else TOP_SPOUTS
 C = 0.006  # clearance between parts that move past each other
+SWIVELS = {"fixed": 1.0, "revolute": 1.0, "continuous": 0.6}
 
 
 def base(ctx):
@@ -80,7 +82,7 @@ def levers(ctx):
             link = b.create_link("lever", root)
             link.set_joint("revolute", T, axis=(0.0, 0.0, -s), limits=(0.0, turn))
             link.add(replace(h0))
-        return valves[0][0][2, 3] + h0.bounds()[1, 2] - top[2, 3]  # handle tops above the spout hub
+        return valves[0][0][2, 3] + span(h0.primitives, 2)[1] - top[2, 3]  # handle tops above the spout hub
     lv = side_lever(p)
     zm = -p.uniform("lever_drop", 0.012, 0.025)
     link = b.create_link("lever", root)
@@ -103,7 +105,7 @@ def spout(ctx):
         rise = p.uniform("rise", *SUBS[ctx.sub][2])
         sp = ctx.choose("template", SPOUTS.get(ctx.sub, TOP_SPOUTS))(p.scope("tube"), radius=r, low=low, rise=rise)
         origin = top
-    kind = p.choice("swivel", {"fixed": 1.0, "revolute": 1.0, "continuous": 0.6})
+    kind = p.choice("swivel", SWIVELS)
     if kind == "fixed":
         root.add(sp, origin)
         return root, origin, sp, r

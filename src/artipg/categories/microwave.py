@@ -33,6 +33,8 @@ SIZES = {
     "over_the_range": ((0.74, 0.77), (0.38, 0.43), (0.39, 0.44), (0.17, 0.21), (0, 0), (4, 5)),
 }
 HANDLES = {flat_bar_handle: 2.0, arch_handle: 1.5, edge_pull: 1.0}  # bar_handle: posts float (see report)
+DOORS = {window_door: 3.0, glass_door: 1.0}
+DIALS = {dial_knob: 1.0}
 
 
 def body(ctx):
@@ -60,7 +62,7 @@ def door(ctx):
     y0, y1 = part.anchor("bay_hi")[1] + gap, W / 2  # door spans the cavity side of the front
     size = (y1 - y0, z_top - fh - 2 * gap)
     centre = ((y0 + y1) / 2, (z_top + fh) / 2)
-    tmpl = ctx.choose("door", {window_door: 3.0, glass_door: 1.0})
+    tmpl = ctx.choose("door", DOORS)
     dr = tmpl(p.scope("door"), *size, thickness=t)
     link = mount_hinged(ctx.builder, root, dr, front_x=-D / 2, center_yz=centre, size_yz=size, side="+y",
                         limits=(0.0, p.uniform("open_angle", 1.57, 1.92)))
@@ -94,7 +96,7 @@ def panel(ctx):
         else:
             items.append((kind, z - h / 2, h))
     root.add(control_panel(p, pw, ph, t, keypad=well), front)
-    knob_t = ctx.choose("knob", KNOBS if sub == "knob_panel" else {dial_knob: 1.0}) if n_knobs else None
+    knob_t = ctx.choose("knob", KNOBS if sub == "knob_panel" else DIALS) if n_knobs else None
     spin = p.flag("continuous", 0.4)
     for i, (kind, zc, h) in enumerate(items):
         q = p.scope(f"{kind}{i}")

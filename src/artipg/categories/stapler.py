@@ -21,7 +21,7 @@ from artipg.geometry import cuboid_between
 from artipg.geometry.transforms import translation
 from artipg.model.part import Part
 from artipg.rules import Category, Slot
-from artipg.templates.office import ARMS, BASES, MAGAZINES
+from artipg.templates.office import ARMS, BASES, MAGAZINES, arm_top
 
 # sub-category -> length, base width, magazine width, hinge radius (half the magazine's height)
 SUBS = {
@@ -77,7 +77,7 @@ def arm(ctx):
                                    p.uniform("nose_gap", 0.001, 0.002))
     # opened past upright (with the magazine up too) the arm's back swings down behind
     # the axle, at most its height above the axle times |cos(angle)|: keep it off the base
-    top = float(part.bounds()[1, 2])
+    top = arm_top(part)
     up = min(p.uniform("open", 1.2, 1.65), math.pi / 2 + math.asin(min(1.0, (rk + gap - 0.001) / top)) - mag_up)
     link = ctx.builder.create_link("arm", mag)
     link.set_joint("revolute", translation(), axis=(0.0, 1.0, 0.0), limits=(0.0, up))

@@ -14,14 +14,13 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
-
 from artipg.geometry import RectRing, cuboid_between
 from artipg.geometry.transforms import translation
 from artipg.model.part import Part
 from artipg.rules import Category, Slot
 from artipg.templates.bodies import carcass
-from artipg.templates.handles import FRONT_HANDLES, knob_pull
+from artipg.templates.extents import span
+from artipg.templates.handles import FRONT_HANDLES, MAX_HALF_WIDTH, knob_pull
 from artipg.templates.mounting import free_edge_yz, front_thickness, handle_pose, mount_hinged, mount_sliding
 from artipg.templates.panels import DOORS, DRAWERS, shelf_board
 from artipg.templates.supports import SUPPORTS
@@ -34,6 +33,7 @@ SIZES = {
     "wardrobe": ((0.8, 1.8), (0.5, 0.65), (1.7, 2.2), (2, 3), (1, 2), 0.2),
     "sideboard": ((1.2, 2.0), (0.4, 0.5), (0.7, 0.9), (3, 4), (1, 3), 0.5),
 }
+ONE_HANDLE = {h: {h: 1.0} for h in FRONT_HANDLES}  # every front takes the same handle design
 
 
 def support(ctx):
@@ -66,31 +66,39 @@ def _stile(part) -> float:
     return math.inf
 
 
-def _split(p, name, total, k, lo=0.6, hi=1.4):
-    w = np.array([p.uniform(f"{name}{i}", lo, hi) for i in range(k)])
-    return np.concatenate([[0.0], np.cumsum(w / w.sum() * total)])
+def _split(p, name, start, total, k, lo=0.6, hi=1.4):
+    """Boundaries (k + 1 floats) of ``k`` random-width spans tiling [start, start + total]."""
+    w = [p.uniform(f"{name}{i}", lo, hi) for i in range(k)]
+    s = 0.0  # in order, not with sum(), which compensates (other last bits) since Python 3.12
+    for x in w:
+        s += x
+    out, acc = [start], 0.0
+    for x in w:
+        acc += x / s * total
+        out.append(start + acc)
+    return out
 
 
 def fronts(ctx):
     root, part, pose = ctx.out["body"]
     p = ctx.p
     *_, cols, rows, p_drawer = SIZES[ctx.sub]
-    lo, hi = part.anchor("cavity_lo"), part.anchor("cavity_hi")
+    lo, hi = part.anchors["cavity_lo"], part.anchors["cavity_hi"]
     W, H, D = hi[1] - lo[1], hi[2] - lo[2], hi[0] - lo[0]
     wall = float(part.primitives[1].params[1])  # side panel thickness
     front_x = lo[0]
     nc = p.integers("columns", *cols)
-    ybs = lo[1] + _split(p, "col_w", W, nc)
+    ybs = _split(p, "col_w", lo[1], W, nc)
     gap = p.uniform("gap", 0.002, 0.004)
     hinge_lim = p.uniform("door_limit", 1.5, 2.1)
-    handles = FRONT_HANDLES if p.flag("mixed_handles", 0.2) else {ctx.choose("handle", FRONT_HANDLES): 1.0}
+    handles = FRONT_HANDLES if p.flag("mixed_handles", 0.2) else ONE_HANDLE[ctx.choose("handle", FRONT_HANDLES)]
     k = 0
     for c in range(nc):
         y0, y1 = ybs[c], ybs[c + 1]
         if c:  # vertical divider on the column boundary
             root.add(Part("body", "divider", [cuboid_between((front_x, y0 - wall / 2, lo[2]), (hi[0], y0 + wall / 2, hi[2]))]), pose)
         nr = p.integers(f"rows{c}", *rows)
-        zbs = lo[2] + _split(p, f"row_h{c}_", H, nr)
+        zbs = _split(p, f"row_h{c}_", lo[2], H, nr)
         for r in range(nr):
             z0, z1 = zbs[r], zbs[r + 1]
             if r:
@@ -144,9 +152,13 @@ def fronts(ctx):
                 m = 0.03 if ht is not knob_pull else 0.04
                 h = ht(q.scope(f"handle{i}"), length=hl)
                 # no handle overhangs its free edge, where a double door's two handles meet
-                # (two ball knobs on stiles narrower than they are would overlap)
-                reach = float(np.abs(h.bounds()[:, 1]).max()) + 0.0015
-                hy, hz = free_edge_yz(side, (w, size[1]), max(min(m, _stile(door) / 2), reach))
+                # (two ball knobs on stiles narrower than they are would overlap): only a
+                # stile narrower than the widest handle needs this handle's bounds
+                margin = min(m, _stile(door) / 2)
+                if margin < MAX_HALF_WIDTH + 0.0015:
+                    ya, yb = span(h.primitives, 1)
+                    margin = max(margin, max(abs(ya), abs(yb)) + 0.0015)
+                hy, hz = free_edge_yz(side, (w, size[1]), margin)
                 link.add(h, handle_pose(door.pose, front_thickness(door), hy, hz, False))
 
 

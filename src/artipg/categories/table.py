@@ -23,6 +23,7 @@ from artipg.model.part import Part
 from artipg.rules import Category, Slot
 from artipg.templates.bodies import carcass
 from artipg.templates.cells import add_door, add_drawer
+from artipg.templates.extents import span
 from artipg.templates.handles import FRONT_HANDLES
 from artipg.templates.panels import DOORS, DRAWERS
 from artipg.templates.supports import round_legs, square_legs, tapered_legs
@@ -138,14 +139,15 @@ def base(ctx):
     if kind == "legs":
         legs = ctx.choose("legs", LEGS)(p.scope("legs"), 2 * ax, 2 * ay, zu)
         root.add(legs)
-        b = legs.primitives[0].bounds()  # front-left leg
-        y_free, depth = -b[1][1] - GAP, 2 * ax - board - GAP
+        leg = legs.primitives[:1]  # front-left leg
+        (x0, x1), (y0, y1) = span(leg, 0), span(leg, 1)
+        y_free, depth = -y1 - GAP, 2 * ax - board - GAP
         if ctx.sub in ("coffee", "side") and p.flag("shelf", 0.5):
-            cx, cy = -(b[0][0] + b[1][0]) / 2, -(b[0][1] + b[1][1]) / 2
+            cx, cy = -(x0 + x1) / 2, -(y0 + y1) / 2
             zs, ts = p.uniform("shelf_z", 0.08, 0.2), p.uniform("shelf_thickness", 0.015, 0.025)
             rails = [cuboid_between((-cx, s * cy - 0.01, zs - 0.03), (cx, s * cy + 0.01, zs), role="rail")
                      for s in (-1, 1)]
-            shelf = cuboid_between((b[1][0], -cy, zs), (-b[1][0], cy, zs + ts), role="board")
+            shelf = cuboid_between((x1, -cy, zs), (-x1, cy, zs + ts), role="board")
             root.add(Part("shelf", "lower_shelf", rails + [shelf]))
     elif kind == "pedestal":
         col = column_base(p.scope("pedestal"), zu, 1.3 * min(ax, ay))

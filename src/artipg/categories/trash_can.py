@@ -40,6 +40,9 @@ SIZES = {"pedal_bin": ((0.1, 0.17), (0.28, 0.7), 0.6), "swing_bin": ((0.12, 0.2)
          "touch_top_bin": ((0.12, 0.18), (0.45, 0.75), 0.5), "bin_cabinet": ((0.15, 0.45), (0.55, 0.9), 0.0)}
 BODIES = {cylindrical_shell: 2.0, tapered_shell: 1.0}
 HANDLES = {flat_bar_handle: 2.0, arch_handle: 2.0, edge_pull: 1.0}
+LIDS = {slab_lid: 1.0, raised_lid: 1.0}
+BUTTONS = {round_button: 1.0, rect_button: 1.0}
+BINS = {box_drawer: 2.0, slot_drawer: 1.0}
 _UP = rot_y(math.pi / 2)  # control frame (surface normal -x) -> surface normal +z
 
 
@@ -68,7 +71,7 @@ def top(ctx):
         if b["round"]:
             lid, ax = ctx.choose("lid", ROUND_LIDS)(p.scope("lid"), b["R"] + o), b["R"] + o
         else:
-            tmpl = ctx.choose("lid", {slab_lid: 1.0, raised_lid: 1.0})
+            tmpl = ctx.choose("lid", LIDS)
             lid, ax = tmpl(p.scope("lid"), b["D"] + o, b["W"] + 2 * o), b["D"] / 2
         mount_lid(ctx.builder, root, lid, (ax, 0.0, H), "+x", (0.0, p.uniform("lid_limit", 1.1, 1.45)))
         bh = p.uniform("hinge_block", 0.02, 0.04)  # below the axis: the lid never reaches it below 90 degrees
@@ -101,7 +104,7 @@ def top(ctx):
     mount_lid(ctx.builder, root, lid, (ax, 0.0, H + ch), "+x", (0.0, p.uniform("lid_limit", 1.4, 1.8)),
               pose=translation(0, 0, -t))  # flush in the collar, hinged on its top back edge
     q = p.scope("button")
-    btn = ctx.choose("button", {round_button: 1.0, rect_button: 1.0})(q, travel=q.uniform("press", 0.003, 0.005))
+    btn = ctx.choose("button", BUTTONS)(q, travel=q.uniform("press", 0.003, 0.005))
     pose = translation(0, 0, H) @ translation(*col.anchor("button")) @ _UP
     root.add(button_bezel(q.scope("bezel"), btn), pose)
     mount_button(ctx.builder, root, btn, pose)
@@ -133,7 +136,7 @@ def _cabinet(ctx, root, W, D, H):
     lo, hi = body.anchor("cavity_lo"), body.anchor("cavity_hi")
     wall, g = float(body.primitives[1].params[1]), 0.003
     tilt = p.flag("tilt_out", 0.4)
-    tmpl, bin_t = ctx.choose("handle", HANDLES), ctx.choose("bin", {box_drawer: 2.0, slot_drawer: 1.0})
+    tmpl, bin_t = ctx.choose("handle", HANDLES), ctx.choose("bin", BINS)
     cw = (W - (n - 1) * g) / n
     z0, z1 = sh + (H - sh) / 2 + lo[2] - wall, sh + (H - sh) / 2 + hi[2] + wall
     for i in range(n):

@@ -27,6 +27,7 @@ from artipg.rules import Category, Slot
 from artipg.templates.bodies import carcass
 from artipg.templates.cells import add_door, add_drawer
 from artipg.templates.controls import BUTTONS, KNOBS, dial_knob, mount_button_row, mount_knob
+from artipg.templates.extents import span
 from artipg.templates.handles import edge_pull, flat_bar_handle
 from artipg.templates.panels import DRAWERS
 from artipg.templates.supports import bun_feet
@@ -140,8 +141,8 @@ def fronts(ctx):
             # or overrides (repair) cannot reproduce the object
             lid = ctx.choose(f"lid{i}.template", LIDS)(q, xh - (xc - a - m), 2 * (a + m))
             link = ctx.builder.create_link("lid", root)
-            b = lid.bounds()
-            link.set_joint("revolute", translation(xh, yc, H + b[1][2] - b[0][2]), axis=(0, 1, 0),
+            bottom, top = span(lid.primitives, 2)
+            link.set_joint("revolute", translation(xh, yc, H + top - bottom), axis=(0, 1, 0),
                            limits=(0.0, q.uniform("limit", 1.2, 1.5)))
             link.add(lid)
         _controls(ctx, root, translation(xb, 0, H + ch / 2), W, ch, len(holes) == 2)

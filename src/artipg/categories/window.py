@@ -34,6 +34,7 @@ SIZES = {"casement": ((0.4, 0.75), (0.6, 1.6), (1, 3), (0.045, 0.07)),
          "sliding": ((0.8, 2.4), (0.6, 1.5), (2, 3), (0.025, 0.04)),
          "double_hung": ((0.5, 1.2), (0.9, 1.8), (2, 2), (0.035, 0.045))}
 PULLS = {arch_handle: 1.0, flat_bar_handle: 1.0, edge_pull: 1.0}
+AWNING_HINGES = {"+z": 2.0, "-z": 1.0}
 
 
 def frame(ctx):
@@ -76,7 +77,7 @@ def sashes(ctx):
     if ctx.sub == "double_hung":
         return _hung(ctx, root, d, c, sash, grid["rail"])
     if ctx.sub == "awning":  # top-hung, or bottom-hung (a hopper)
-        hinge, pull_t = p.choice("awning_hinge", {"+z": 2.0, "-z": 1.0}), ctx.choose("pull", PULLS)
+        hinge, pull_t = p.choice("awning_hinge", AWNING_HINGES), ctx.choose("pull", PULLS)
         lim = p.uniform("awning_limit", 0.3, 0.8) if hinge == "+z" else p.uniform("hopper_limit", 0.2, 0.4)
     else:
         hinge, lim = None, p.uniform("limit", 1.2, 1.7)

@@ -16,6 +16,9 @@ from artipg.geometry.transforms import translation
 from artipg.model.part import Part, Region
 
 
+_SIDES = {4: 3.0, 6: 1.0, 8: 1.0}  # polygon sides of square bodies
+
+
 def _neck(p, z0, neck_r, neck_h, lip: bool):
     t = p.uniform("neck_wall", 0.0018, 0.0032)
     prims = [ring(neck_r, neck_r - t, neck_h, pose=translation(0, 0, z0 + neck_h / 2), role="neck")]
@@ -52,7 +55,7 @@ def shouldered_body(p, radius: float, height: float, neck_r: float, neck_h: floa
 def square_body(p, radius: float, height: float, neck_r: float, neck_h: float) -> Part:
     """Prismatic body (square, hexagonal or octagonal) with a short conical shoulder;
     ``radius`` is the polygon's circumradius."""
-    n = p.choice("sides", {4: 3.0, 6: 1.0, 8: 1.0})
+    n = p.choice("sides", _SIDES)
     apothem = radius * math.cos(math.pi / n)
     hs = p.uniform("shoulder", 0.08, 0.2) * (height - neck_h)
     hb = height - neck_h - hs

@@ -15,11 +15,12 @@ import math
 import numpy as np
 
 from artipg.geometry import cuboid_between, rect_ring, tri_prism
-from artipg.geometry.transforms import rot_x, rot_z, translation
+from artipg.geometry.transforms import IDENTITY, rot_x, rot_z, translation
 from artipg.model.part import Part, Region
 
 #: hinge edge of a box -> yaw of the lid frame (the lid extends towards its local -x)
 EDGE_YAW = {"+x": 0.0, "+y": math.pi / 2, "-x": math.pi, "-y": -math.pi / 2}
+_EDGE_TURN = {edge: rot_z(yaw) for edge, yaw in EDGE_YAW.items()}
 
 
 def open_box(p, depth: float, width: float, height: float, wall: float | None = None, z0: float = 0.0,
@@ -134,7 +135,6 @@ def mount_lid(builder, parent, part, axis_point, edge: str, limits, name: str = 
     (4, 4) places the part in the joint frame (e.g. lowered for a lid set flush in an
     opening, whose axis is its top back edge)."""
     link = builder.create_link(name, parent)
-    link.set_joint("revolute", translation(*axis_point) @ rot_z(EDGE_YAW[edge]), axis=(0.0, 1.0, 0.0),
-                   limits=limits)
-    link.add(part, np.eye(4) if pose is None else pose)
+    link.set_joint("revolute", translation(*axis_point) @ _EDGE_TURN[edge], axis=(0.0, 1.0, 0.0), limits=limits)
+    link.add(part, IDENTITY if pose is None else pose)
     return link

@@ -25,6 +25,7 @@ from artipg.geometry import cuboid, cuboid_between, cylinder, frustum, ring, tor
 from artipg.geometry.transforms import rot_x, rot_y, rot_z, translation
 from artipg.geometry.tube import arc, line
 from artipg.model.part import Part, Region
+from artipg.templates.extents import span
 
 _ALONG_Y = rot_x(math.pi / 2)
 
@@ -56,7 +57,7 @@ def column_stool_base(p, top: float, gas: bool = False) -> Part:
 def leg_stool_frame(p, legs: Part, footprint: float, top: float) -> Part:
     """Top plate (down to the legs' tops) and a ring of rungs for four stool ``legs``
     (a supports template part)."""
-    tp = top - float(legs.bounds()[1][2])
+    tp = top - span(legs.primitives, 2)[1]
     b = legs.primitives[0].bounds()
     c, zr = -(b[0] + b[1]) / 2, p.uniform("rung_z", 0.22, 0.32)
     prims = [_box((-c[0], s * c[1] - 0.01, zr), (c[0], s * c[1] + 0.01, zr + 0.02), "rung") for s in (-1, 1)]

@@ -42,11 +42,14 @@ _ALONG_MX = rot_y(-math.pi / 2)  # local z -> -x (frustum r_bottom at the back, 
 # gripper frames approaching +x (towards the surface); jaws closing along y or along z
 _JAW_Y = np.array([[0.0, 0.0, 1.0, 0.0], [0.0, 1.0, 0.0, 0.0], [-1.0, 0.0, 0.0, 0.0], [0.0, 0.0, 0.0, 1.0]])
 _JAW_Z = np.array([[0.0, 0.0, 1.0, 0.0], [1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 0.0, 1.0]])
+_GRIP = Region(("grip",))  # regions are frozen: one object serves every knob
 
 
 def _x_disc(r_back: float, r_front: float, x0: float, x1: float, role: str):
     """Frustum along x from x0 (back, > x1) to x1 (front), radii at each end."""
-    return frustum(r_back, r_front, x0 - x1, translation((x0 + x1) / 2, 0, 0) @ _ALONG_MX, role=role)
+    T = _ALONG_MX.copy()  # translation((x0 + x1) / 2, 0, 0) @ _ALONG_MX, bit for bit
+    T[0, 3] = (x0 + x1) / 2
+    return frustum(r_back, r_front, x0 - x1, T, role=role)
 
 
 def _knob_part(template, prims, x_grip, width_y, width_z, depth) -> Part:
@@ -56,7 +59,7 @@ def _knob_part(template, prims, x_grip, width_y, width_z, depth) -> Part:
         T[0, 3] = x_grip
         grasps.append(Grasp(T, w + 0.02))
     return Part("knob", template, prims, anchors={"front": (-depth, 0.0, 0.0), "back": (0.0, 0.0, 0.0)},
-                regions={"rotate": Region(("grip",)), "grasp": Region(("grip",))}, grasps=grasps,
+                regions={"rotate": _GRIP, "grasp": _GRIP}, grasps=grasps,
                 actionable="hinge_knob")
 
 
@@ -111,9 +114,10 @@ KNOBS = {round_knob: 2.0, pointer_knob: 1.5, fluted_knob: 1.0, dial_knob: 1.0}
 def _button_part(template, prims, stand, depth, travel, face, sem="button", act="slider_button") -> Part:
     x = -stand - depth
     box = np.array([[x - 1e-4, -face[0] / 2, -face[1] / 2], [x + 1e-4, face[0] / 2, face[1] / 2]])
+    cap = Region(("cap",), box)
     return Part(sem, template, prims,
                 anchors={"front": (x, 0.0, 0.0), "back": (-stand, 0.0, 0.0), "stop": (-stand + travel, 0.0, 0.0)},
-                regions={"press": Region(("cap",), box), "push": Region(("cap",), box)}, actionable=act)
+                regions={"press": cap, "push": cap}, actionable=act)
 
 
 def _stand_depth(p, reach, travel):
@@ -159,14 +163,14 @@ def button_bezel(p, button: Part, gap: float | None = None) -> Part:
     prim = button.primitives[0]
     back, front = -button.anchors["back"][0], -button.anchors["front"][0]
     depth = back + p.uniform("cover", 0.2, 0.5) * (front - back)
-    T = translation(-depth / 2, 0, 0)
+    T = _ALONG_X.copy()  # translation(-depth / 2, 0, 0) @ _ALONG_X, bit for bit
+    T[0, 3] = -depth / 2
     if prim.geom is Cuboid:
         _, w, h = prim.params
-        ring_ = rect_ring(h + 2 * (g + wall), w + 2 * (g + wall), depth, h + 2 * g, w + 2 * g, T @ _ALONG_X,
-                          role="bezel")
+        ring_ = rect_ring(h + 2 * (g + wall), w + 2 * (g + wall), depth, h + 2 * g, w + 2 * g, T, role="bezel")
     else:
         r = max(prim.params[0], prim.params[1])
-        ring_ = ring(r + g + wall, r + g, depth, pose=T @ _ALONG_X, role="bezel")
+        ring_ = ring(r + g + wall, r + g, depth, pose=T, role="bezel")
     return Part("panel", "button_bezel", [ring_], anchors={"front": (-depth, 0.0, 0.0)})
 
 

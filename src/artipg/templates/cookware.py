@@ -21,6 +21,7 @@ from artipg.geometry import cuboid, cuboid_between, cylinder, rect_ring, torus, 
 from artipg.geometry.transforms import rot_x, rot_y, translation
 from artipg.geometry.tube import arc, line
 from artipg.model.part import Grasp, Part, Region
+from artipg.templates.extents import span
 from artipg.templates.handles import arch_handle
 from artipg.templates.lids import flat_lid
 from artipg.templates.levers import top_grasp
@@ -35,10 +36,9 @@ _LIFT.flags.writeable = False
 def _grasp(x: float, y: float, z: float, approach, jaw, width: float) -> Grasp:
     """A grasp at (x, y, z) (part frame) approaching along the unit vector ``approach``
     with the jaws closing along the unit vector ``jaw`` (perpendicular to it)."""
-    T = np.eye(4)
-    T[:3, 1], T[:3, 2] = jaw, approach
-    T[:3, 0] = np.cross(T[:3, 1], T[:3, 2])
-    T[:3, 3] = x, y, z
+    (jx, jy, jz), (ax, ay, az) = jaw, approach
+    T = np.array(((jy * az - jz * ay, jx, ax, x), (jz * ax - jx * az, jy, ay, y), (jx * ay - jy * ax, jz, az, z),
+                  (0.0, 0.0, 0.0, 1.0)))  # x axis: jaw x approach
     return Grasp(T, width, _LIFT)
 
 
@@ -161,7 +161,7 @@ def arch_lug(p, radius: float) -> Part:
     part.primitives = [pr.placed(T) for pr in part.primitives]
     part.grasps = [Grasp(T @ g.pose, g.width, _LIFT) for g in part.grasps]
     part.template = "arch_lug"
-    part.anchors["clear"] = (0.0, 0.0, float(part.bounds()[1, 2]))
+    part.anchors["clear"] = (0.0, 0.0, span(part.primitives, 2)[1])
     return part
 
 

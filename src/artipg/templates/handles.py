@@ -120,6 +120,10 @@ def edge_pull(p, length: float | None = None) -> Part:
                 actionable="line_fixed_handle")
 
 
+#: No front handle reaches further than this from its long axis (largest |y| of its
+#: geometry in the handle frame), metres: a knob head or an edge-pull lip, 2.3 cm at most.
+MAX_HALF_WIDTH = 0.025
+
 #: Front handles, interchangeable (weights used by categories that do not override).
 FRONT_HANDLES = {bar_handle: 3.0, arch_handle: 2.0, flat_bar_handle: 2.0, knob_pull: 1.5, ball_knob_pull: 1.0,
                  edge_pull: 1.0}

@@ -14,6 +14,8 @@ import numpy as np
 
 from artipg.geometry.transforms import rot_x, translation
 
+_HORIZONTAL = rot_x(math.pi / 2)  # handle frame turned so its long axis runs along y
+
 # hinge side -> (edge direction in (y, z), joint axis); "+y" is the viewer's left
 _HINGES = {
     "+y": ((1.0, 0.0), (0.0, 0.0, -1.0)),
@@ -80,7 +82,7 @@ def handle_pose(front_pose: np.ndarray, thickness: float, y: float, z: float, ho
     ``front_pose`` is the panel part's pose in its link; y, z are in the panel frame.
     """
     T = front_pose @ translation(-thickness, y, z)
-    return T @ rot_x(math.pi / 2) if horizontal else T
+    return T @ _HORIZONTAL if horizontal else T
 
 
 def free_edge_yz(side: str, size_yz, margin: float) -> tuple[float, float]:

@@ -15,9 +15,10 @@ import math
 
 import numpy as np
 
-from artipg.geometry import cuboid_between, cylinder, ring, tri_prism
+from artipg.geometry import Ring, cuboid_between, cylinder, ring, tri_prism
 from artipg.geometry.transforms import rot_x, rot_z, translation
 from artipg.model.part import Part, Region
+from artipg.templates.extents import span
 from artipg.templates.levers import top_grasp
 
 _Y = rot_x(math.pi / 2)  # local z -> object -y (cylinders and rings along y)
@@ -130,3 +131,9 @@ def humped_arm(p, length, width, radius, clear, skirt, axle_r, nose_gap) -> Part
 
 
 ARMS = {flat_arm: 2.0, rounded_arm: 2.0, humped_arm: 1.0}
+
+
+def arm_top(part: Part) -> float:
+    """Highest z of an arm part (the top of its bounds), metres above the axle."""
+    # the skirts' rings around the axle stay below the cover: leave them out
+    return span([pr for pr in part.primitives if not (pr.geom is Ring and pr.role == "skirt")], 2)[1]

@@ -60,8 +60,9 @@ def column(p, radius: float, height: float) -> Part:
 
 
 def _spout(template, prims, outlet, direction, extra=None) -> Part:
-    d = np.asarray(direction, dtype=float)
-    anchors = {"outlet": tuple(outlet), "outlet_dir": tuple(d / np.linalg.norm(d))}
+    dx, dy, dz = direction
+    n = math.sqrt(dx * dx + dy * dy + dz * dz)  # the sum np.linalg.norm makes (the same bits)
+    anchors = {"outlet": tuple(outlet), "outlet_dir": (dx / n, dy / n, dz / n)}
     return Part("spout", template, prims, anchors=anchors | (extra or {}),
                 regions={"grasp": Region(("tube",)), "rotate": Region(("tube",))})
 

@@ -1,0 +1,144 @@
+"""Shortcuts in the category rules and part templates: each gives exactly what the
+plain computation it replaces gives (the same bits), or skips it only where it cannot
+change the result."""
+
+from __future__ import annotations
+
+import itertools
+
+import numpy as np
+import pytest
+
+import artipg
+from artipg.rules import ParamRecorder
+from artipg.templates.extents import span
+from artipg.templates.handles import FRONT_HANDLES, MAX_HALF_WIDTH
+from artipg.templates.office import ARMS, arm_top
+
+
+def _half_width(part) -> float:
+    return float(np.abs(part.bounds()[:, 1]).max())
+
+
+@pytest.mark.parametrize("template", list(FRONT_HANDLES), ids=lambda t: t.__name__)
+def test_front_handles_stay_within_max_half_width(template):
+    rec = ParamRecorder(np.random.default_rng(0))
+    template(rec, length=0.1)
+    names = [k for k, p in rec.record.items() if p.kind == "uniform"]
+    widest = 0.0
+    # every corner of the parameter box (overrides are clamped into each range) ...
+    for corner in itertools.product((-1e9, 1e9), repeat=len(names)):
+        for length in (0.02, 0.35):
+            part = template(ParamRecorder(np.random.default_rng(0), overrides=dict(zip(names, corner))), length=length)
+            widest = max(widest, _half_width(part))
+    # ... and random draws
+    for seed in range(200):
+        widest = max(widest, _half_width(template(ParamRecorder(np.random.default_rng(seed)), length=0.2)))
+    assert 0.0 < widest <= MAX_HALF_WIDTH
+
+
+@pytest.mark.parametrize("k", [1, 2, 3, 4, 5])
+def test_storage_furniture_split_is_the_numpy_cumsum(k):
+    from artipg.categories.storage_furniture import _split
+
+    for seed in range(300):
+        rng = np.random.default_rng(seed)
+        start, total = rng.uniform(-1.0, 1.0), rng.uniform(0.1, 2.0)
+        got = _split(ParamRecorder(np.random.default_rng(seed)), "w", start, total, k)
+        p = ParamRecorder(np.random.default_rng(seed))
+        w = np.array([p.uniform(f"w{i}", 0.6, 1.4) for i in range(k)])
+        want = start + np.concatenate([[0.0], np.cumsum(w / w.sum() * total)])
+        assert np.array_equal(np.array(got), want)
+
+
+@pytest.mark.parametrize("category", artipg.categories())
+def test_span_is_the_part_bounds(category):
+    for seed in range(3):
+        for link in artipg.generate(category, seed).links:
+            for part in link.parts:
+                b = part.bounds()
+                for axis in range(3):
+                    assert np.array(span(part.primitives, axis)).tobytes() == b[:, axis].tobytes()
+
+
+@pytest.mark.parametrize("template", list(ARMS), ids=lambda t: t.__name__)
+def test_stapler_arm_top_is_the_bounds_top(template):
+    for seed in range(200):
+        rng = np.random.default_rng(seed)
+        radius, axle = rng.uniform(0.005, 0.013), rng.uniform(0.0015, 0.0025)
+        y0 = rng.uniform(0.0075, 0.018)
+        part = template(ParamRecorder(rng), rng.uniform(0.07, 0.45), 2 * y0, radius, rng.uniform(0.001, 0.003),
+                        (y0, y0 + rng.uniform(0.0015, 0.0022)), axle, rng.uniform(0.001, 0.002))
+        assert arm_top(part) == part.bounds()[1, 2]
+
+
+def test_cookware_grasp_frame_is_the_numpy_cross_product():
+    from artipg.templates.cookware import _grasp
+
+    rng = np.random.default_rng(0)
+    for _ in range(2000):
+        a, j = rng.normal(size=3), rng.normal(size=3)
+        a[rng.integers(3)] = 0.0  # the templates' axes have zero components
+        a, j = tuple((a / np.linalg.norm(a)).tolist()), tuple((j / np.linalg.norm(j)).tolist())
+        x, y, z = rng.normal(size=3).tolist()
+        T = np.eye(4)
+        T[:3, 1], T[:3, 2] = j, a
+        T[:3, 0] = np.cross(T[:3, 1], T[:3, 2])
+        T[:3, 3] = x, y, z
+        assert _grasp(x, y, z, a, j, 0.03).pose.tobytes() == T.tobytes()
+
+
+def test_spout_outlet_direction_is_the_numpy_normalisation():
+    from artipg.templates.spouts import _spout
+
+    rng = np.random.default_rng(0)
+    for i in range(5000):
+        a = rng.uniform(-np.pi, np.pi)
+        d = (np.cos(a), 0.0, np.sin(a)) if i % 2 else tuple(rng.uniform(-2, 2) * np.array([np.cos(a), 0.0, np.sin(a)]))
+        d = tuple(float(v) for v in d)
+        want = np.asarray(d) / np.linalg.norm(np.asarray(d))
+        got = _spout("arc_spout", [], (0.0, 0.0, 0.0), d).anchors["outlet_dir"]
+        assert np.array(got).tobytes() == want.tobytes()
+
+
+def test_choices_take_constant_option_sets():
+    # a dict, a list or a tuple of variables is a new object per call: it misses the
+    # recorder's option cache (keyed by identity) and fills it; weights belong in module
+    # constants (a tuple of literals is one constant object)
+    import ast
+    import pathlib
+
+    def fresh(node):
+        if isinstance(node, ast.Tuple):
+            try:
+                ast.literal_eval(node)
+            except ValueError:
+                return True
+            return False
+        return isinstance(node, (ast.Dict, ast.List, ast.Set, ast.DictComp, ast.ListComp, ast.SetComp))
+
+    src = pathlib.Path(artipg.__file__).parent
+    bad = []
+    for path in sorted([*src.glob("categories/*.py"), *src.glob("templates/*.py")]):
+        for node in ast.walk(ast.parse(path.read_text())):
+            if (isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute)
+                    and node.func.attr in ("choice", "choose") and len(node.args) > 1 and fresh(node.args[1])):
+                bad.append(f"{path.name}:{node.lineno}")
+    assert not bad, bad
+
+
+def test_control_poses_are_the_translation_products():
+    from artipg.geometry.transforms import translation
+    from artipg.templates.controls import _ALONG_MX, _ALONG_X, BUTTONS, _x_disc, button_bezel
+
+    rng = np.random.default_rng(0)
+    for seed in range(500):
+        x0 = -rng.uniform(0.0, 0.02) if seed % 3 else 0.0
+        x1 = x0 - rng.uniform(0.001, 0.03)
+        disc = _x_disc(0.01, 0.008, x0, x1, "grip")
+        assert disc.pose.tobytes() == (translation((x0 + x1) / 2, 0, 0) @ _ALONG_MX).tobytes()
+        for button in BUTTONS:
+            bezel = button_bezel(ParamRecorder(np.random.default_rng(seed)),
+                                 button(ParamRecorder(np.random.default_rng(seed))))
+            depth = -bezel.anchors["front"][0]
+            assert bezel.primitives[0].pose.tobytes() == (translation(-depth / 2, 0, 0) @ _ALONG_X).tobytes()
