@@ -188,6 +188,19 @@ def corners_bounds(b: np.ndarray, T: np.ndarray) -> np.ndarray:
     return np.stack([w.min(axis=0), w.max(axis=0)])
 
 
+def corners_bounds_union(B: np.ndarray, T: np.ndarray) -> np.ndarray:
+    """Bounding box (2, 3) of the union of boxes ``B`` (M, 2, 3) after transforms ``T``
+    (M, 4, 4): the same values as the union of :func:`corners_bounds` of each pair
+    (each slice of the stacked product is the same matrix product), in a few calls."""
+    c = B[:, :1] + _CORNER_SIGNS * (B[:, 1:] - B[:, :1])  # (M, 8, 3)
+    w = c @ T[:, :3, :3].transpose(0, 2, 1)
+    w += T[:, None, :3, 3]
+    out = np.empty((2, 3))
+    w.min(axis=(0, 1), out=out[0])
+    w.max(axis=(0, 1), out=out[1])
+    return out
+
+
 def boxes(lo, hi) -> np.ndarray:
     """Boxes (M, 2, 3) from corner columns ``lo``, ``hi`` (3-tuples of (M,) arrays or
     scalars; at least one an array), written in place rather than stacked."""
