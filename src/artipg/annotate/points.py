@@ -13,6 +13,7 @@ from functools import cached_property
 
 import numpy as np
 
+from artipg.geometry.base import TWO_PI
 from artipg.geometry.patches import FAMILIES, sample_family
 from artipg.rules.streams import streams
 from artipg.vocabulary import SEMANTIC_LABELS, label_id
@@ -152,8 +153,62 @@ class PrimitiveTable:
 
     # ------------------------------------------------------------ patches
     @cached_property
+    def _packed(self) -> tuple | None:
+        """The groups as the compiled kernels (:mod:`artipg.geometry.kernels`) take them:
+        (parameters (N, p), template codes (G,), group row offsets (G + 1,), global
+        primitive indices (N,), cos and sin (2, N) of 0 and of the arcs); None when a
+        template has no compiled twin."""
+        from artipg.geometry.kernels import ARC_COLUMN, CODES
+
+        groups = self.groups
+        code = [CODES.get(g.geom) for g in groups]
+        if None in code or not groups:
+            return None
+        if len(groups) == 1:
+            PP, prim = groups[0].P, groups[0].prim
+        else:
+            PP = np.empty((self.n_prims, max(g.P.shape[1] for g in groups)))
+            s = 0
+            for g in groups:
+                e = s + len(g.P)
+                PP[s:e, :g.P.shape[1]] = g.P
+                s = e
+            prim = np.concatenate([g.prim for g in groups])
+        start = np.zeros(len(groups) + 1, dtype=np.int64)
+        np.cumsum([len(g.P) for g in groups], out=start[1:])
+        ends = np.zeros((2, self.n_prims))
+        arcs = False
+        for g, c, s in zip(groups, code, start.tolist()):
+            col = ARC_COLUMN.get(c)
+            if col is not None:
+                # what revolve's patches and _arc_bounds_batch take the cosines of
+                np.minimum(g.P[:, col], TWO_PI, out=ends[1, s:s + len(g.P)])
+                arcs = True
+        trig = (np.cos(ends), np.sin(ends)) if arcs else (ends, ends)
+        return (PP, np.array(code, dtype=np.int64), start, prim) + trig
+
+    @cached_property
     def families(self) -> list[_Family]:
         """Non-empty patch families in :data:`FAMILIES` order (cells with area > 0)."""
+        packed = self._packed
+        if packed is None:
+            return self._plain_families()
+        from artipg.geometry.kernels import TABLES, families
+
+        params, area, prim, counts = families(*packed, *TABLES)
+        out = []
+        start = 0
+        for name, P, k in zip(FAMILIES, params, counts.tolist()):
+            if k:
+                out.append(_Family(name, P, prim[start:start + k], area[start:start + k], start, start + k))
+                start += k
+        if out:
+            self.__dict__["cell_areas"] = area
+            self.__dict__["cell_prim"] = prim
+        return out
+
+    def _plain_families(self) -> list[_Family]:
+        """:attr:`families` from the templates' ``patches`` (numpy): the definition."""
         found: dict[str, list] = {}
         for g in self.groups:
             for b in g.geom.patches(g.P):
