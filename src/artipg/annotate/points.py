@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from functools import cached_property
+from itertools import chain
 
 import numpy as np
 
@@ -45,7 +46,7 @@ class _Group:
     geom : type
         The geometry template.
     P : (M, p) ndarray
-        Parameters.
+        Parameters (a view of the table's packed parameters).
     prim : (M,) int64
         Global primitive index of each row.
     T : (M, 4, 4) ndarray
@@ -54,11 +55,22 @@ class _Group:
         Link index and part index (instance id).
     """
 
-    def __init__(self, table: "PrimitiveTable", geom: type, P: np.ndarray, prim: np.ndarray):
+    def __init__(self, table: "PrimitiveTable", geom: type, index: int):
         self._table = table
         self.geom = geom
-        self.P = P
-        self.prim = prim
+        self._index = index
+
+    @cached_property
+    def P(self) -> np.ndarray:
+        t, g = self._table, self._index
+        M = t._start[g + 1] - t._start[g]
+        a, b = t._foff[g], t._foff[g + 1]
+        return t._flat[a:b].reshape(M, (b - a) // M)
+
+    @cached_property
+    def prim(self) -> np.ndarray:
+        t, g = self._table, self._index
+        return t._order[t._start[g]:t._start[g + 1]]
 
     @cached_property
     def T(self) -> np.ndarray:
@@ -98,6 +110,19 @@ class _Family:
 class PrimitiveTable:
     """An object's primitives, grouped by geometry template, in their link frames.
 
+    Parameters
+    ----------
+    geoms : list of type
+        The geometry template of each group, in order of first appearance.
+    flat : (F,) ndarray
+        Parameters of the groups' rows one after the other (row-major within a group).
+    start, foff : list of int
+        Group g is rows ``start[g]:start[g + 1]`` of ``order`` and ``flat[foff[g]:foff[g + 1]]``.
+    order : (N,) int64
+        Global primitive index of every row, groups one after the other.
+    prim_T, prim_link, prim_part, part_semantic
+        The attributes below.
+
     Attributes
     ----------
     groups : list of _Group
@@ -110,9 +135,13 @@ class PrimitiveTable:
     prim_link, prim_part : (N,) int64
     """
 
-    def __init__(self, groups: list[tuple[type, np.ndarray, np.ndarray]], prim_T: np.ndarray,
-                 prim_link: np.ndarray, prim_part: np.ndarray, part_semantic: np.ndarray):
-        self.groups = [_Group(self, geom, P, prim) for geom, P, prim in groups]
+    def __init__(self, geoms: list[type], flat: np.ndarray, start: list[int], foff: list[int], order: np.ndarray,
+                 prim_T: np.ndarray, prim_link: np.ndarray, prim_part: np.ndarray, part_semantic: np.ndarray):
+        self.groups = [_Group(self, geom, g) for g, geom in enumerate(geoms)]
+        self._flat = flat
+        self._start = start
+        self._foff = foff
+        self._order = order
         self.n_prims = len(prim_T)
         self.prim_T = prim_T
         self.prim_link = prim_link
@@ -132,8 +161,10 @@ class PrimitiveTable:
                 prims += part.primitives
         prim_part = np.arange(len(counts)).repeat(counts)
         prim_link = np.array(part_link, dtype=np.int64).repeat(counts)
+        sem = np.array(sem, dtype=np.int64)
         if not prims:
-            return cls([], np.zeros((0, 4, 4)), prim_link, prim_part, np.array(sem, dtype=np.int64))
+            return cls([], np.zeros(0), [0], [0], np.zeros(0, dtype=np.int64), np.zeros((0, 4, 4)), prim_link,
+                       prim_part, sem)
         geoms, params, poses = list(zip(*prims))[:3]
         # concatenating (4, 4) arrays is about twice as fast as np.array on a list of them
         prim_T = (np.concatenate(part_poses).reshape(-1, 4, 4)[prim_part]
@@ -141,51 +172,54 @@ class PrimitiveTable:
         # rows of each geometry template, templates in order of first appearance
         first: dict = {}
         gid = [first.setdefault(g, len(first)) for g in geoms]
+        N = len(prims)
         if len(first) == 1:
-            groups = [(geoms[0], np.array(params, dtype=float), np.arange(len(prims)))]
+            start, order = [0, N], np.arange(N)
+            rows = params
         else:
-            rows: list[list[int]] = [[] for _ in first]
+            by_group: list[list[int]] = [[] for _ in first]
             for i, j in enumerate(gid):
-                rows[j].append(i)
-            groups = [(geoms[r[0]], np.array([params[i] for i in r], dtype=float), np.array(r, dtype=np.int64))
-                      for r in rows]
-        return cls(groups, prim_T, prim_link, prim_part, np.array(sem, dtype=np.int64))
+                by_group[j].append(i)
+            start = [0]
+            for r in by_group:
+                start.append(start[-1] + len(r))
+            idx = [i for r in by_group for i in r]
+            order = np.array(idx, dtype=np.int64)
+            rows = [params[i] for i in idx]
+        # every row of a group has its template's parameter count (numpy would refuse ragged rows)
+        foff = [0]
+        for g in range(len(first)):
+            width = len(rows[start[g]])
+            foff.append(foff[-1] + width * (start[g + 1] - start[g]))
+        if sum(map(len, rows)) != foff[-1]:
+            raise ValueError("primitives of one geometry template have different parameter counts")
+        flat = np.fromiter(chain.from_iterable(rows), float, foff[-1])
+        return cls(list(first), flat, start, foff, order, prim_T, prim_link, prim_part, sem)
 
     # ------------------------------------------------------------ patches
     @cached_property
     def _packed(self) -> tuple | None:
         """The groups as the compiled kernels (:mod:`artipg.geometry.kernels`) take them:
-        (parameters (N, p), template codes (G,), group row offsets (G + 1,), global
-        primitive indices (N,), cos and sin (2, N) of 0 and of the arcs); None when a
-        template has no compiled twin."""
+        (packed parameters, their group offsets (G + 1,), group row offsets (G + 1,),
+        global primitive index of each row (N,), template codes (G,), numpy's cos and sin
+        (2, N) of 0 and of each row's arc); None when a template has no compiled twin."""
         from artipg.geometry.kernels import ARC_COLUMN, CODES
 
-        groups = self.groups
-        code = [CODES.get(g.geom) for g in groups]
-        if None in code or not groups:
+        code = [CODES.get(g.geom) for g in self.groups]
+        if None in code or not code:
             return None
-        if len(groups) == 1:
-            PP, prim = groups[0].P, groups[0].prim
-        else:
-            PP = np.empty((self.n_prims, max(g.P.shape[1] for g in groups)))
-            s = 0
-            for g in groups:
-                e = s + len(g.P)
-                PP[s:e, :g.P.shape[1]] = g.P
-                s = e
-            prim = np.concatenate([g.prim for g in groups])
-        start = np.zeros(len(groups) + 1, dtype=np.int64)
-        np.cumsum([len(g.P) for g in groups], out=start[1:])
-        ends = np.zeros((2, self.n_prims))
+        N = self.n_prims
+        ends = np.zeros((2, N))
         arcs = False
-        for g, c, s in zip(groups, code, start.tolist()):
+        for g, c in zip(self.groups, code):
             col = ARC_COLUMN.get(c)
             if col is not None:
                 # what revolve's patches and _arc_bounds_batch take the cosines of
-                np.minimum(g.P[:, col], TWO_PI, out=ends[1, s:s + len(g.P)])
+                s, e = self._start[g._index], self._start[g._index + 1]
+                np.minimum(g.P[:, col], TWO_PI, out=ends[1, s:e])
                 arcs = True
         trig = (np.cos(ends), np.sin(ends)) if arcs else (ends, ends)
-        return (PP, np.array(code, dtype=np.int64), start, prim) + trig
+        return (self._flat, np.array(self._foff), np.array(self._start), self._order, np.array(code)) + trig
 
     @cached_property
     def families(self) -> list[_Family]:
@@ -286,6 +320,20 @@ class PrimitiveTable:
     @cached_property
     def local_boxes(self) -> np.ndarray:
         """Bounding box (N, 2, 3) of every primitive in its own frame, by global index."""
+        packed = self._packed
+        if packed is None:
+            return self._plain_local_boxes()
+        from artipg.geometry.kernels import BOX_CODES, CODES, QUARTER_TRIG, local_boxes
+
+        out = np.empty((self.n_prims, 2, 3))
+        local_boxes(*packed, QUARTER_TRIG, out)
+        for g in self.groups:
+            if CODES[g.geom] not in BOX_CODES:
+                out[g.prim] = g.geom.bounds_batch(g.P)
+        return out
+
+    def _plain_local_boxes(self) -> np.ndarray:
+        """:attr:`local_boxes` from the templates' ``bounds_batch`` (numpy): the definition."""
         if len(self.groups) == 1:
             return self.groups[0].geom.bounds_batch(self.groups[0].P)
         out = np.empty((self.n_prims, 2, 3))

@@ -35,8 +35,8 @@ from artipg.geometry.revolve import _FRUSTUM_CAPS, _QUARTERS, _RING_CAPS, Frustu
 
 #: Template -> code used by the kernels; a template not listed takes the numpy path.
 CODES = {Cuboid: 0, RectRing: 1, Frustum: 2, Ring: 3, Sphere: 4, Torus: 5, Prism: 6, TriPrism: 7}
-#: Templates whose local boxes the kernel computes (the prisms' need numpy's cos).
-BOX_CODES = frozenset(range(6))
+#: Codes of the templates whose local boxes the kernel computes (the prisms' need numpy's cos).
+BOX_CODES = (0, 1, 2, 3, 4, 5)
 #: Column of the arc parameter of the templates that have one (ring, torus), by code.
 ARC_COLUMN = {3: 3, 5: 2}
 _RING_ARC, _TORUS_ARC = ARC_COLUMN[3], ARC_COLUMN[5]
@@ -365,20 +365,26 @@ def _tri_prism(P, prim, buf, cnt):
 
 
 @numba.njit(cache=True)
-def families(PP, code, start, prim, cos_e, sin_e, box_t, ring_t, sides_t, fcaps_t, rcaps_t, prism_trig):
+def _rows(flat, foff, start, g):
+    """Parameters (M, p) of group g: a view of the packed parameters."""
+    M = start[g + 1] - start[g]
+    return flat[foff[g]:foff[g + 1]].reshape(M, (foff[g + 1] - foff[g]) // M)
+
+
+@numba.njit(cache=True)
+def families(flat, foff, start, prim, code, cos_e, sin_e, box_t, ring_t, sides_t, fcaps_t, rcaps_t, prism_trig):
     """Patch families of an object's primitives, as ``PrimitiveTable.families`` builds them.
 
     Parameters
     ----------
-    PP : (N, 5) ndarray
-        Parameters of every primitive, groups one after the other (rows of a group in
-        its order, columns past the template's own unused).
-    code : (G,) int64
-        :data:`CODES` of each group's template.
-    start : (G + 1,) int64
-        Rows ``start[g]:start[g + 1]`` of ``PP`` are group g.
+    flat : (F,) ndarray
+        Parameters of every primitive, groups one after the other, row-major in a group.
+    foff, start : (G + 1,) int64
+        Group g is ``flat[foff[g]:foff[g + 1]]`` and rows ``start[g]:start[g + 1]``.
     prim : (N,) int64
         Global primitive index of each row.
+    code : (G,) int64
+        :data:`CODES` of each group's template.
     cos_e, sin_e : (2, N) ndarray
         numpy's cos and sin of 0 and of each row's arc (rings and tori; others unused).
     box_t, ring_t, sides_t, fcaps_t, rcaps_t, prism_trig : ndarray
@@ -406,7 +412,7 @@ def families(PP, code, start, prim, cos_e, sin_e, box_t, ring_t, sides_t, fcaps_
     cnt = np.zeros(6, dtype=np.int64)
     for g in range(G):
         s, e = start[g], start[g + 1]
-        P, pr, c = PP[s:e], prim[s:e], code[g]
+        P, pr, c = _rows(flat, foff, start, g), prim[s:e], code[g]
         if c == 0:
             _cuboid(P, pr, box_t, buf, cnt)
         elif c == 1:
@@ -475,20 +481,24 @@ def _arc_box(out, r_lo, r_hi, arc, cs, quarter, z0, z1):
 
 
 @numba.njit(cache=True)
-def local_boxes(PP, code, start, prim, cos_e, sin_e, quarter, out):
+def local_boxes(flat, foff, start, prim, code, cos_e, sin_e, quarter, out):
     """Write the local box (2, 3) of every primitive of the groups whose template is in
     :data:`BOX_CODES` to ``out[prim]`` (N, 2, 3): the values of their ``bounds_batch``.
     Arguments as for :func:`families`; ``quarter`` is :data:`QUARTER_TRIG`."""
     cs = np.empty((2, 2))
     for g in range(len(code)):
         s, e, c = start[g], start[g + 1], code[g]
+        if c >= len(BOX_CODES):  # the prisms (last codes)
+            continue
+        P = _rows(flat, foff, start, g)
         full = True  # every row a full turn (rings and tori)
         if c == 3 or c == 5:
             col = _RING_ARC if c == 3 else _TORUS_ARC
-            for m in range(s, e):
-                full = full and PP[m, col] >= _FULL_TURN
-        for m in range(s, e):
-            p, b = PP[m], out[prim[m]]
+            for m in range(e - s):
+                full = full and P[m, col] >= _FULL_TURN
+        for i in range(e - s):
+            m = s + i
+            p, b = P[i], out[prim[m]]
             cs[0, 0], cs[0, 1], cs[1, 0], cs[1, 1] = cos_e[0, m], cos_e[1, m], sin_e[0, m], sin_e[1, m]
             if c == 0 or c == 1:
                 for k in range(3):
