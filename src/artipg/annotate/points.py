@@ -138,6 +138,7 @@ class PrimitiveTable:
     def __init__(self, geoms: list[type], flat: np.ndarray, start: list[int], foff: list[int], order: np.ndarray,
                  prim_T: np.ndarray, prim_link: np.ndarray, prim_part: np.ndarray, part_semantic: np.ndarray):
         self.groups = [_Group(self, geom, g) for g, geom in enumerate(geoms)]
+        self._cells = None  # (cell areas, cell primitives) when the families give them whole
         self._flat = flat
         self._start = start
         self._foff = foff
@@ -237,8 +238,7 @@ class PrimitiveTable:
                 out.append(_Family(name, P, prim[start:start + k], area[start:start + k], start, start + k))
                 start += k
         if out:
-            self.__dict__["cell_areas"] = area
-            self.__dict__["cell_prim"] = prim
+            self._cells = (area, prim)
         return out
 
     def _plain_families(self) -> list[_Family]:
@@ -280,18 +280,23 @@ class PrimitiveTable:
     def cell_areas(self) -> np.ndarray:
         """Area (K,) of every patch cell, m^2, in family order."""
         fams = self.families
+        if self._cells is not None:  # the compiled families return them whole
+            return self._cells[0]
         return np.concatenate([f.area for f in fams]) if len(fams) != 1 else fams[0].area
 
     @cached_property
     def cell_prim(self) -> np.ndarray:
         """Global primitive index (K,) of every patch cell."""
         fams = self.families
+        if self._cells is not None:
+            return self._cells[1]
         return np.concatenate([f.prim for f in fams]) if len(fams) != 1 else fams[0].prim
 
     @cached_property
     def cell_p(self) -> np.ndarray:
         """Multinomial probabilities (K,) of the cells: proportional to area."""
-        return self.cell_areas / self.cell_areas.sum()
+        a = self.cell_areas
+        return a / a.sum()
 
     def part_cell_p(self, parts) -> np.ndarray:
         """Cell probabilities restricted to the primitives of ``parts`` (instance ids)."""

@@ -132,6 +132,30 @@ def _push(fam, params, area, prim, buf, cnt):
 
 
 @numba.njit(cache=True)
+def _push_affine(fam, T, area, P, prim, buf, cnt):
+    """:func:`_push` of a block whose parameters are the rows of sparse table ``T``
+    (:func:`_sparse`, c p rows) applied to ``P`` (M, q), computed only for the kept cells."""
+    pb, ab, ib = buf[fam]
+    k = cnt[fam]
+    c, M = area.shape
+    p = T.shape[0] // c
+    for i in range(c):
+        for m in range(M):
+            a = area[i, m]
+            if a > 0.0:
+                for j in range(p):
+                    r = i * p + j
+                    acc = 0.0
+                    acc += T[r, 2] * P[m, int(T[r, 0])]
+                    acc += T[r, 3] * P[m, int(T[r, 1])]
+                    pb[j, k] = acc + T[r, 4]
+                ab[k] = a
+                ib[k] = prim[m]
+                k += 1
+    cnt[fam] = k
+
+
+@numba.njit(cache=True)
 def _cross_norm(ax, ay, az, bx, by, bz):
     """:func:`artipg.geometry.patches.cross_norm` of one pair (same operations)."""
     u = ay * bz - az * by
@@ -145,29 +169,25 @@ def _cross_norm(ax, ay, az, bx, by, bz):
 @numba.njit(cache=True)
 def _cuboid(P, prim, box_t, buf, cnt):
     M = P.shape[0]
-    params = np.empty((6, 12, M))
-    _affine_rows(box_t, P, params.reshape(72, M))
     area = np.empty((6, M))
     for m in range(M):
         for i in range(3):
             a = P[m, _FACE_I[i]] * P[m, _FACE_J[i]]
             area[2 * i, m] = a
             area[2 * i + 1, m] = a
-    _push(_RECT, params, area, prim, buf, cnt)
+    _push_affine(_RECT, box_t, area, P, prim, buf, cnt)
 
 
 @numba.njit(cache=True)
 def _rect_ring(P, prim, ring_t, sides_t, buf, cnt):
     M = P.shape[0]
-    params = np.empty((16, 12, M))
-    _affine_rows(ring_t, P, params.reshape(192, M))
     sides = np.empty((32, M))
     _affine_rows(sides_t, P, sides)
     area = np.empty((16, M))
     for r in range(16):
         for m in range(M):
             area[r, m] = sides[r, m] * sides[16 + r, m]
-    _push(_RECT, params, area, prim, buf, cnt)
+    _push_affine(_RECT, ring_t, area, P, prim, buf, cnt)
 
 
 @numba.njit(cache=True)
@@ -189,14 +209,12 @@ def _frustum(P, prim, caps_t, buf, cnt):
         q[6] = -s * d0
         area[0, m] = ((TWO_PI * 0.5) * (r0 + r1)) * slant
     _push(_BAND, band, area, prim, buf, cnt)
-    caps = np.empty((2, 15, M))
-    _affine_rows(caps_t, P, caps.reshape(30, M))
     cap_area = np.empty((2, M))
     for k in range(2):
         for m in range(M):
             r = P[m, k]
             cap_area[k, m] = ((np.pi * P[m, 3 + k]) * r) * r
-    _push(_SECTOR, caps, cap_area, prim, buf, cnt)
+    _push_affine(_SECTOR, caps_t, cap_area, P, prim, buf, cnt)
 
 
 @numba.njit(cache=True)
@@ -204,8 +222,6 @@ def _ring(P, prim, cos_e, sin_e, caps_t, buf, cnt):
     M = P.shape[0]
     walls = np.empty((2, 7, M))
     wall_area = np.empty((2, M))
-    annuli = np.empty((2, 15, M))
-    _affine_rows(caps_t, P, annuli.reshape(30, M))
     annulus_area = np.empty((2, M))
     ends = np.zeros((2, 12, M))
     end_area = np.zeros((2, M))
@@ -240,7 +256,7 @@ def _ring(P, prim, cos_e, sin_e, caps_t, buf, cnt):
                 e[9], e[10] = -se * sg, ce * sg
                 end_area[k, m] = _cross_norm(ax, ay, 0.0, bx, by, h)
     _push(_BAND, walls, wall_area, prim, buf, cnt)
-    _push(_SECTOR, annuli, annulus_area, prim, buf, cnt)
+    _push_affine(_SECTOR, caps_t, annulus_area, P, prim, buf, cnt)
     _push(_RECT, ends, end_area, prim, buf, cnt)
 
 
