@@ -163,6 +163,7 @@ class PrimitiveTable:
         prim_part = np.arange(len(counts)).repeat(counts)
         prim_link = np.array(part_link, dtype=np.int64).repeat(counts)
         sem = np.array(sem, dtype=np.int64)
+        n_root = sum(counts[:len(obj.links[0].parts)]) if obj.links else 0
         if not prims:
             return cls([], np.zeros(0), [0], [0], np.zeros(0, dtype=np.int64), np.zeros((0, 4, 4)), prim_link,
                        prim_part, sem)
@@ -195,32 +196,27 @@ class PrimitiveTable:
         if sum(map(len, rows)) != foff[-1]:
             raise ValueError("primitives of one geometry template have different parameter counts")
         flat = np.fromiter(chain.from_iterable(rows), float, foff[-1])
-        return cls(list(first), flat, start, foff, order, prim_T, prim_link, prim_part, sem)
+        table = cls(list(first), flat, start, foff, order, prim_T, prim_link, prim_part, sem)
+        table._n_root = n_root
+        return table
 
     # ------------------------------------------------------------ patches
     @cached_property
     def _packed(self) -> tuple | None:
         """The groups as the compiled kernels (:mod:`artipg.geometry.kernels`) take them:
-        (packed parameters, their group offsets (G + 1,), group row offsets (G + 1,),
-        global primitive index of each row (N,), template codes (G,), numpy's cos and sin
-        (2, N) of 0 and of each row's arc); None when a template has no compiled twin."""
-        from artipg.geometry.kernels import ARC_COLUMN, CODES
+        (packed parameters (F,), their group offsets (G + 1,), group row offsets
+        (G + 1,), global primitive index of each row (N,), template codes (G,), numpy's
+        cos and sin of the packed parameters (F,), :data:`~artipg.geometry.kernels.TRIG`);
+        None when a template has no compiled twin."""
+        from artipg.geometry.kernels import ARC_COLUMN, CODES, TRIG
 
         code = [CODES.get(g.geom) for g in self.groups]
         if None in code or not code:
             return None
-        N = self.n_prims
-        ends = np.zeros((2, N))
-        arcs = False
-        for g, c in zip(self.groups, code):
-            col = ARC_COLUMN.get(c)
-            if col is not None:
-                # what revolve's patches and _arc_bounds_batch take the cosines of
-                s, e = self._start[g._index], self._start[g._index + 1]
-                np.minimum(g.P[:, col], TWO_PI, out=ends[1, s:e])
-                arcs = True
-        trig = (np.cos(ends), np.sin(ends)) if arcs else (ends, ends)
-        return (self._flat, np.array(self._foff), np.array(self._start), self._order, np.array(code)) + trig
+        flat = self._flat
+        # the arcs of rings and tori are the only parameters whose cos and sin are read
+        trig = (np.cos(flat), np.sin(flat)) if any(c in ARC_COLUMN for c in code) else (flat, flat)
+        return (flat, np.array(self._foff), np.array(self._start), self._order, np.array(code)) + trig + (TRIG,)
 
     @cached_property
     def families(self) -> list[_Family]:
@@ -309,10 +305,18 @@ class PrimitiveTable:
     # ------------------------------------------------------------ frames and boxes
     def shift_root(self, S: np.ndarray) -> None:
         """Apply object-frame transform ``S`` to every root-link primitive."""
-        m = self.prim_link == 0
-        self.prim_T[m] = S @ self.prim_T[m]
+        n = self._n_root
+        self.prim_T[:n] = S @ self.prim_T[:n]
         for g in self.groups:
             g.__dict__.pop("T", None)
+
+    @cached_property
+    def _n_root(self) -> int:
+        """Number of root-link primitives: they come first (parts are in link order)."""
+        n = int(np.count_nonzero(self.prim_link == 0))
+        if not (self.prim_link[:n] == 0).all():
+            raise ValueError("primitives are not in link order")
+        return n
 
     def world_all(self, link_poses: np.ndarray) -> np.ndarray:
         """Poses (M, 3, 4) of all primitives in the object frame, by global index."""
@@ -328,13 +332,14 @@ class PrimitiveTable:
         packed = self._packed
         if packed is None:
             return self._plain_local_boxes()
-        from artipg.geometry.kernels import BOX_CODES, CODES, QUARTER_TRIG, local_boxes
+        from artipg.geometry.kernels import BOX_CODES, local_boxes
 
         out = np.empty((self.n_prims, 2, 3))
-        local_boxes(*packed, QUARTER_TRIG, out)
-        for g in self.groups:
-            if CODES[g.geom] not in BOX_CODES:
-                out[g.prim] = g.geom.bounds_batch(g.P)
+        local_boxes(*packed, out)
+        if packed[4].max() >= len(BOX_CODES):  # prisms: their bounds_batch needs numpy's cos
+            for g, c in zip(self.groups, packed[4].tolist()):
+                if c >= len(BOX_CODES):
+                    out[g.prim] = g.geom.bounds_batch(g.P)
         return out
 
     def _plain_local_boxes(self) -> np.ndarray:
@@ -353,10 +358,28 @@ class PrimitiveTable:
     def bounds(self, link_poses: np.ndarray) -> np.ndarray:
         """Bounding box (2, 3) of all primitives in the object frame (union of their
         transformed local boxes: exact for boxes, loose for rotated round solids)."""
-        b = self.world_boxes(link_poses)
         out = np.empty((2, 3))
-        b[:, 0].min(axis=0, out=out[0])
-        b[:, 1].max(axis=0, out=out[1])
+        if self._packed is None:
+            b = self.world_boxes(link_poses)
+            b[:, 0].min(axis=0, out=out[0])
+            b[:, 1].max(axis=0, out=out[1])
+            return out
+        from artipg.geometry.kernels import box_union
+
+        # transform_boxes and the union, with its two matrix products left to numpy (BLAS)
+        W = self.world_all(link_poses)
+        c, h = self._local_centre_half
+        R = W[:, :3, :3]
+        box_union(R @ c[:, :, None], np.abs(R) @ h[:, :, None], W, out)
+        return out
+
+    @cached_property
+    def _local_centre_half(self) -> np.ndarray:
+        """Centres and half extents (2, N, 3) of :attr:`local_boxes` (compiled path only)."""
+        from artipg.geometry.kernels import centre_half
+
+        out = np.empty((2, self.n_prims, 3))
+        centre_half(self.local_boxes, out)
         return out
 
 

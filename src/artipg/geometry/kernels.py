@@ -55,6 +55,7 @@ _CELLS[6, _RECT], _CELLS[6, _TRI] = MAX_SIDES, 2 * MAX_SIDES
 _CELLS[7, _RECT], _CELLS[7, _TRI] = 3, 2
 
 _FULL_TURN = TWO_PI - 1e-9  # _is_full: arc >= this
+_ANGLES = np.concatenate([[0.0], _QUARTERS, [TWO_PI]])
 _FACE_I, _FACE_J = (1, 0, 0), (2, 2, 1)  # Cuboid.component_areas
 
 
@@ -91,8 +92,9 @@ def _sparse(table: np.ndarray) -> np.ndarray:
 #: The constant inputs of :func:`families`, in its argument order.
 TABLES = (_sparse(_BOX_TABLE), _sparse(_RING_TABLE), _sparse(np.concatenate([_RING_SIDES.T, np.zeros((32, 1))], axis=1)),
           _sparse(_FRUSTUM_CAPS), _sparse(_RING_CAPS), _prism_trig())
-#: cos and sin of the quarter turns that :func:`artipg.geometry.revolve._arc_bounds_batch` tests.
-QUARTER_TRIG = np.ascontiguousarray(np.stack([np.cos(_QUARTERS), np.sin(_QUARTERS)]))
+#: numpy's cos (row 0) and sin (row 1) of 0, the quarter turns that
+#: :func:`artipg.geometry.revolve._arc_bounds_batch` tests, and 2π.
+TRIG = np.ascontiguousarray(np.stack([np.cos(_ANGLES), np.sin(_ANGLES)]))
 
 
 # ---------------------------------------------------------------- cell buffers
@@ -218,7 +220,7 @@ def _frustum(P, prim, caps_t, buf, cnt):
 
 
 @numba.njit(cache=True)
-def _ring(P, prim, cos_e, sin_e, caps_t, buf, cnt):
+def _ring(P, prim, C, S, trig, caps_t, buf, cnt):
     M = P.shape[0]
     walls = np.empty((2, 7, M))
     wall_area = np.empty((2, M))
@@ -244,8 +246,8 @@ def _ring(P, prim, cos_e, sin_e, caps_t, buf, cnt):
         annulus_area[0, m] = (arc / 2) * (ro * ro - ri * ri)
         annulus_area[1, m] = (arc / 2) * (ro1 * ro1 - ri1 * ri1)
         if not arc >= _FULL_TURN:  # the flat ends of a partial ring
-            for k in range(2):
-                ce, se = cos_e[k, m], sin_e[k, m]
+            for k in range(2):  # at 0 and at arc
+                ce, se = (trig[0, 0], trig[1, 0]) if k == 0 else (C[m, 3], S[m, 3])
                 sg = -1.0 if k == 0 else 1.0
                 ax, ay = (ro - ri) * ce, (ro - ri) * se
                 bx, by = tp * ce, tp * se
@@ -285,7 +287,7 @@ def _sphere(P, prim, buf, cnt):
 
 
 @numba.njit(cache=True)
-def _torus(P, prim, cos_e, sin_e, buf, cnt):
+def _torus(P, prim, C, S, trig, buf, cnt):
     M = P.shape[0]
     tube = np.empty((1, 3, M))
     tube_area = np.empty((1, M))
@@ -296,8 +298,8 @@ def _torus(P, prim, cos_e, sin_e, buf, cnt):
         tube[0, 0, m], tube[0, 1, m], tube[0, 2, m] = R, r, arc
         tube_area[0, m] = ((TWO_PI * r) * R) * arc
         if not arc >= _FULL_TURN:  # end discs of a partial torus, when capped
-            for k in range(2):
-                ce, se = cos_e[k, m], sin_e[k, m]
+            for k in range(2):  # at 0 and at arc
+                ce, se = (trig[0, 0], trig[1, 0]) if k == 0 else (C[m, 2], S[m, 2])
                 sg = -1.0 if k == 0 else 1.0
                 q = caps[k, :, m]
                 q[0], q[1], q[3], q[4] = R * ce, R * se, ce, se
@@ -388,7 +390,8 @@ def _rows(flat, foff, start, g):
 
 
 @numba.njit(cache=True)
-def families(flat, foff, start, prim, code, cos_e, sin_e, box_t, ring_t, sides_t, fcaps_t, rcaps_t, prism_trig):
+def families(flat, foff, start, prim, code, cos_f, sin_f, trig, box_t, ring_t, sides_t, fcaps_t, rcaps_t,
+             prism_trig):
     """Patch families of an object's primitives, as ``PrimitiveTable.families`` builds them.
 
     Parameters
@@ -401,8 +404,11 @@ def families(flat, foff, start, prim, code, cos_e, sin_e, box_t, ring_t, sides_t
         Global primitive index of each row.
     code : (G,) int64
         :data:`CODES` of each group's template.
-    cos_e, sin_e : (2, N) ndarray
-        numpy's cos and sin of 0 and of each row's arc (rings and tori; others unused).
+    cos_f, sin_f : (F,) ndarray
+        numpy's cos and sin of ``flat`` (read for the arcs of rings and tori only, and
+        only those below 2π: the arcs numpy takes the cosines of).
+    trig : (2, 5) ndarray
+        :data:`TRIG`.
     box_t, ring_t, sides_t, fcaps_t, rcaps_t, prism_trig : ndarray
         :data:`TABLES`.
 
@@ -436,11 +442,11 @@ def families(flat, foff, start, prim, code, cos_e, sin_e, box_t, ring_t, sides_t
         elif c == 2:
             _frustum(P, pr, fcaps_t, buf, cnt)
         elif c == 3:
-            _ring(P, pr, cos_e[:, s:e], sin_e[:, s:e], rcaps_t, buf, cnt)
+            _ring(P, pr, _rows(cos_f, foff, start, g), _rows(sin_f, foff, start, g), trig, rcaps_t, buf, cnt)
         elif c == 4:
             _sphere(P, pr, buf, cnt)
         elif c == 5:
-            _torus(P, pr, cos_e[:, s:e], sin_e[:, s:e], buf, cnt)
+            _torus(P, pr, _rows(cos_f, foff, start, g), _rows(sin_f, foff, start, g), trig, buf, cnt)
         elif c == 6:
             _prism(P, pr, prism_trig, buf, cnt)
         else:
@@ -472,22 +478,23 @@ def _turn_box(out, r, z0, z1):
 
 
 @numba.njit(cache=True)
-def _arc_box(out, r_lo, r_hi, arc, cs, quarter, z0, z1):
-    """:func:`artipg.geometry.revolve._arc_bounds_batch` of one row: ``cs`` (2, 2) holds
-    the cos (row 0) and sin (row 1) of 0 and min(arc, 2π), ``quarter`` (2, 3) those of
-    the quarter turns."""
+def _arc_box(out, r_lo, r_hi, arc, ca, sa, trig, z0, z1):
+    """:func:`artipg.geometry.revolve._arc_bounds_batch` of one row: ``ca``, ``sa`` are
+    numpy's cos and sin of min(arc, 2π), ``trig`` is :data:`TRIG`."""
     out[0, 2] = z0
     out[1, 2] = z1
     a = arc if arc <= TWO_PI else TWO_PI
     for ax in range(2):
         lo, hi = np.inf, -np.inf
-        for j in range(5):
-            if j < 2:
-                t = cs[ax, j]
+        for j in range(5):  # the angles 0, arc and the quarter turns inside the arc
+            if j == 0:
+                t = trig[ax, 0]
+            elif j == 1:
+                t = ca if ax == 0 else sa
             else:
                 if not _QUARTERS[j - 2] < a:
                     continue
-                t = quarter[ax, j - 2]
+                t = trig[ax, j - 1]
             for r in (r_lo, r_hi):
                 v = t * r
                 lo = min(lo, v)
@@ -497,25 +504,32 @@ def _arc_box(out, r_lo, r_hi, arc, cs, quarter, z0, z1):
 
 
 @numba.njit(cache=True)
-def local_boxes(flat, foff, start, prim, code, cos_e, sin_e, quarter, out):
+def _arc_trig(C, S, trig, m, col, arc):
+    """numpy's cos and sin of min(arc, 2π) for row m: the packed ones below 2π."""
+    if arc < TWO_PI:
+        return C[m, col], S[m, col]
+    return trig[0, 4], trig[1, 4]
+
+
+@numba.njit(cache=True)
+def local_boxes(flat, foff, start, prim, code, cos_f, sin_f, trig, out):
     """Write the local box (2, 3) of every primitive of the groups whose template is in
     :data:`BOX_CODES` to ``out[prim]`` (N, 2, 3): the values of their ``bounds_batch``.
-    Arguments as for :func:`families`; ``quarter`` is :data:`QUARTER_TRIG`."""
-    cs = np.empty((2, 2))
+    Arguments as for :func:`families`."""
     for g in range(len(code)):
         s, e, c = start[g], start[g + 1], code[g]
         if c >= len(BOX_CODES):  # the prisms (last codes)
             continue
         P = _rows(flat, foff, start, g)
+        C = _rows(cos_f, foff, start, g)
+        S = _rows(sin_f, foff, start, g)
         full = True  # every row a full turn (rings and tori)
         if c == 3 or c == 5:
             col = _RING_ARC if c == 3 else _TORUS_ARC
             for m in range(e - s):
                 full = full and P[m, col] >= _FULL_TURN
-        for i in range(e - s):
-            m = s + i
-            p, b = P[i], out[prim[m]]
-            cs[0, 0], cs[0, 1], cs[1, 0], cs[1, 1] = cos_e[0, m], cos_e[1, m], sin_e[0, m], sin_e[1, m]
+        for m in range(e - s):
+            p, b = P[m], out[prim[s + m]]
             if c == 0 or c == 1:
                 for k in range(3):
                     b[1, k] = p[k] * 0.5
@@ -532,7 +546,8 @@ def local_boxes(flat, foff, start, prim, code, cos_e, sin_e, quarter, out):
                     _turn_box(b, r_hi, -h / 2, h / 2)
                 else:
                     r_lo = ri if ri <= ri + tp else ri + tp
-                    _arc_box(b, r_lo, r_hi, arc, cs, quarter, -h / 2, h / 2)
+                    ca, sa = _arc_trig(C, S, trig, m, 3, arc)
+                    _arc_box(b, r_lo, r_hi, arc, ca, sa, trig, -h / 2, h / 2)
             elif c == 4:
                 R, lo, hi = p[0], p[1], p[2]
                 if lo <= 0 and hi >= 0:
@@ -544,9 +559,34 @@ def local_boxes(flat, foff, start, prim, code, cos_e, sin_e, quarter, out):
                 b[1, 0], b[1, 1], b[0, 0], b[0, 1] = r, r, -r, -r
                 b[0, 2], b[1, 2] = lo, hi
             elif c == 5:
-                R, r = p[0], p[1]
+                R, r, arc = p[0], p[1], p[2]
                 if full:
                     _turn_box(b, R + r, -r, r)
                 else:
-                    _arc_box(b, R - r, R + r, p[2], cs, quarter, -r, r)
+                    ca, sa = _arc_trig(C, S, trig, m, 2, arc)
+                    _arc_box(b, R - r, R + r, arc, ca, sa, trig, -r, r)
 
+
+@numba.njit(cache=True)
+def centre_half(boxes, out):
+    """Centres ``out[0]`` and half extents ``out[1]`` (N, 3) of ``boxes`` (N, 2, 3), as
+    :func:`artipg.annotate.points.transform_boxes` computes them."""
+    for i in range(boxes.shape[0]):
+        for k in range(3):
+            out[0, i, k] = (boxes[i, 0, k] + boxes[i, 1, k]) * 0.5
+            out[1, i, k] = (boxes[i, 1, k] - boxes[i, 0, k]) * 0.5
+
+
+@numba.njit(cache=True)
+def box_union(Rc, Rh, W, out):
+    """Bounding box ``out`` (2, 3) of the boxes with centres ``Rc + W[:, :3, 3]`` and half
+    extents ``Rh`` (``Rc``, ``Rh`` (N, 3, 1): the rotated centres and the half extents
+    through |R|): the union :func:`artipg.annotate.points.transform_boxes` gives."""
+    for k in range(3):
+        lo, hi = np.inf, -np.inf
+        for i in range(Rc.shape[0]):
+            wc = Rc[i, k, 0] + W[i, k, 3]
+            lo = min(lo, wc - Rh[i, k, 0])
+            hi = max(hi, wc + Rh[i, k, 0])
+        out[0, k] = lo
+        out[1, k] = hi

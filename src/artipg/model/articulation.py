@@ -144,20 +144,48 @@ class ArticulatedObject:
             raise ValueError(f"qpos has {len(q)} values, object has {len(mv)} movable joints")
         return {j.name: float(v) for j, v in zip(mv, q)}
 
+    @cached_property
+    def _levels(self) -> list[tuple]:
+        """The non-root links by depth: (links, their parents, their joints' indices)
+        per level, each a slice when contiguous (one parent: its index) else an array."""
+        idx = self.link_index
+        depth = [0] * len(self.links)
+        parent = [0] * len(self.links)
+        for i in range(1, len(self.links)):
+            parent[i] = p = idx[self.links[i].joint.parent]
+            if p >= i:
+                raise ValueError(f"link {self.links[i].name} comes before its parent")
+            depth[i] = depth[p] + 1
+        out = []
+        for d in range(1, max(depth, default=0) + 1):
+            kids = [i for i in range(1, len(depth)) if depth[i] == d]
+            pars = sorted({parent[i] for i in kids})
+            contiguous = kids[-1] - kids[0] == len(kids) - 1
+            out.append((slice(kids[0], kids[-1] + 1) if contiguous else np.array(kids),
+                        pars[0] if len(pars) == 1 else np.array([parent[i] for i in kids]),
+                        slice(kids[0] - 1, kids[-1]) if contiguous else np.array(kids) - 1, kids))
+        return out
+
     def link_poses(self, qpos=None) -> np.ndarray:
         """Pose (L, 4, 4) of every link in the object frame at joint state ``qpos``."""
         q = self.qpos_dict(qpos)
-        idx = self.link_index
         links = self.links
         T = np.empty((len(links), 4, 4))
         T[0] = IDENTITY
-        for i in range(1, len(links)):
-            j = links[i].joint
-            v = q.get(j.name, 0.0) if q else 0.0
-            if v:
-                T[i] = (T[idx[j.parent]] @ j.origin) @ j.motion(v)
-            else:
-                _matmul(T[idx[j.parent]], j.origin, out=T[i])
+        if len(links) == 1:
+            return T
+        # a level at a time: T[link] = T[parent] @ origin for all its links at once (the
+        # same product for each), then the moved ones times their motion
+        origins = np.concatenate([lk.joint.origin for lk in links[1:]]).reshape(-1, 4, 4)
+        for kids, parents, joints, members in self._levels:
+            A = T[parents] @ origins[joints]
+            if q:
+                for k, i in enumerate(members):
+                    j = links[i].joint
+                    v = q.get(j.name, 0.0)
+                    if v:
+                        A[k] = A[k] @ j.motion(v)
+            T[kids] = A
         return T
 
     def part_poses(self, qpos=None) -> np.ndarray:
