@@ -1,17 +1,17 @@
-"""The framework's batched fast paths give the bits of the plain computations they replace."""
+"""The framework's fast paths give the bits of the plain computations they replace:
+Part.bounds' stacked corners, and the compiled (numba) twins of the templates' patches
+and local boxes that PrimitiveTable uses (artipg.geometry.kernels)."""
 
 from __future__ import annotations
+
+import copy
 
 import numpy as np
 import pytest
 
 import artipg
-
-
-def same(a, b) -> bool:
-    a, b = np.asarray(a), np.asarray(b)
-    return a.shape == b.shape and a.dtype == b.dtype and np.ascontiguousarray(a).tobytes() == \
-        np.ascontiguousarray(b).tobytes()
+from artipg.annotate.points import PrimitiveTable
+from test_points_fast import GEOMS, _object_groups, _param_cases, _random_params, same
 
 
 CATS = artipg.categories()
@@ -24,3 +24,80 @@ def test_part_bounds_is_the_union_of_the_primitive_bounds(category):
             b = np.array([p.bounds() for p in part.primitives])
             plain = np.stack([b[:, 0].min(axis=0), b[:, 1].max(axis=0)])
             assert same(part.bounds(), plain), part.name
+
+
+# ---------------------------------------------------------------- compiled patch families and boxes
+
+def _table(geoms_params: list, rng) -> PrimitiveTable:
+    """A table whose groups are ``(geom, P)`` pairs, rows dealt to shuffled global indices."""
+    N = sum(len(P) for _, P in geoms_params)
+    order = rng.permutation(N)
+    start, foff, flat = [0], [0], []
+    for _, P in geoms_params:
+        start.append(start[-1] + len(P))
+        foff.append(foff[-1] + P.size)
+        flat.append(P.ravel())
+    T = np.tile(np.eye(4), (N, 1, 1))
+    T[:, :3, 3] = rng.random((N, 3))
+    return PrimitiveTable([g for g, _ in geoms_params], np.concatenate(flat), start, foff, order, T,
+                          np.zeros(N, dtype=np.int64), np.zeros(N, dtype=np.int64), np.zeros(1, dtype=np.int64))
+
+
+def _same_families(table) -> bool:
+    got, want = table.families, table._plain_families()
+    return len(got) == len(want) and all(
+        (g.name, g.start, g.stop) == (w.name, w.start, w.stop) and same(g.params, w.params)
+        and same(g.prim, w.prim) and same(g.area, w.area) for g, w in zip(got, want)) \
+        and same(table.cell_areas, np.concatenate([w.area for w in want])) \
+        and same(table.cell_prim, np.concatenate([w.prim for w in want]))
+
+
+@pytest.mark.parametrize("name", sorted(GEOMS))
+def test_compiled_families_and_local_boxes_match_the_templates(name):
+    """Every template's compiled twin, on the edge cases of test_points_fast (cones, open
+    caps, partial and full arcs, tapers, cut spheres, mixed prism side counts...)."""
+    rng = np.random.default_rng(11)
+    cases = [P for n, P in _param_cases() if n == name] + [P for n, P in _object_groups(1) if n == name]
+    for P in cases:
+        table = _table([(GEOMS[name], np.ascontiguousarray(P, dtype=float))], rng)
+        assert table._packed is not None
+        assert _same_families(table), name
+        assert same(table.local_boxes, table._plain_local_boxes()), name
+
+
+def test_compiled_families_and_local_boxes_match_on_mixed_tables():
+    """Several templates in one table, in every order, rows scattered over the indices."""
+    rng = np.random.default_rng(12)
+    names = sorted(GEOMS)
+    for _ in range(40):
+        picked = rng.permutation(names)[:int(rng.integers(1, len(names) + 1))]
+        table = _table([(GEOMS[n], _random_params(n, int(rng.integers(1, 9)), rng)) for n in picked], rng)
+        assert _same_families(table)
+        assert same(table.local_boxes, table._plain_local_boxes())
+
+
+@pytest.mark.parametrize("category", CATS)
+def test_compiled_table_matches_the_numpy_table_on_objects(category):
+    for seed in range(3):
+        obj = artipg.generate(category, seed)
+        table = obj.primitive_table
+        assert table._packed is not None and _same_families(table)
+        assert same(table.local_boxes, table._plain_local_boxes())
+        plain = copy.copy(table)  # the same arrays, without the cached compiled results
+        for k in ("local_boxes", "_local_centre_half", "families", "cell_areas", "cell_prim", "cell_p"):
+            plain.__dict__.pop(k, None)
+        plain._packed = None  # the numpy path throughout
+        for qpos in (None, obj.limits()[:, 1], 0.3 * obj.limits()[:, 0] + 0.7 * obj.limits()[:, 1]):
+            L = obj.link_poses(qpos)
+            assert same(table.bounds(L), plain.bounds(L))
+        assert same(table.world_boxes(L), plain.world_boxes(L))
+
+
+def test_compiled_tables_take_only_exact_affine_rows():
+    """The compiled affine rows rely on at most two coefficients of ±1/2 or ±1 per row."""
+    from artipg.geometry.kernels import _sparse
+
+    _sparse(np.array([[[0.5, -1.0, 0.0, 2.0]]]))
+    for bad in ([[[0.5, 0.5, 0.5, 0.0]]], [[[0.25, 0.0, 0.0, 0.0]]]):
+        with pytest.raises(ValueError):
+            _sparse(np.array(bad))

@@ -344,8 +344,6 @@ class PrimitiveTable:
 
     def _plain_local_boxes(self) -> np.ndarray:
         """:attr:`local_boxes` from the templates' ``bounds_batch`` (numpy): the definition."""
-        if len(self.groups) == 1:
-            return self.groups[0].geom.bounds_batch(self.groups[0].P)
         out = np.empty((self.n_prims, 2, 3))
         for g in self.groups:
             out[g.prim] = g.geom.bounds_batch(g.P)
