@@ -11,6 +11,9 @@ import pytest
 
 import artipg
 from artipg.annotate.points import PrimitiveTable
+from artipg.geometry import cuboid
+from artipg.geometry.transforms import rot_x, rot_z, translation
+from artipg.model import ObjectBuilder, Part
 from test_points_fast import GEOMS, _object_groups, _param_cases, _random_params, same
 
 
@@ -101,3 +104,61 @@ def test_compiled_tables_take_only_exact_affine_rows():
     for bad in ([[[0.5, 0.5, 0.5, 0.0]]], [[[0.25, 0.0, 0.0, 0.0]]]):
         with pytest.raises(ValueError):
             _sparse(np.array(bad))
+
+
+# ---------------------------------------------------------------- link poses and the normalisation
+
+def _plain_link_poses(obj, qpos=None):
+    """One link at a time, as the definition reads."""
+    q = obj.qpos_dict(qpos)
+    idx = obj.link_index
+    T = np.empty((len(obj.links), 4, 4))
+    T[0] = np.eye(4)
+    for i in range(1, len(obj.links)):
+        j = obj.links[i].joint
+        v = q.get(j.name, 0.0)
+        T[i] = (T[idx[j.parent]] @ j.origin) @ j.motion(v) if v else T[idx[j.parent]] @ j.origin
+    return T
+
+
+def _tree(normalize: bool):
+    """Links out of depth order (root, a, b under a, c, d under b, e under c), parts on all."""
+    rng = np.random.default_rng(5)
+    b = ObjectBuilder()
+    made = {"root": b.create_link("root")}
+    for name, parent in (("a", "root"), ("b", "a"), ("c", "root"), ("d", "b"), ("e", "c")):
+        lb = made[name] = b.create_link(name, made[parent])
+        lb.set_joint("revolute", rot_z(rng.random()) @ translation(*rng.random(3)), axis=rng.random(3) - 0.5,
+                     limits=(-1.0, 1.0))
+    for name, lb in made.items():
+        for k in range(2):
+            prim = cuboid(*(rng.random(3) + 0.1), rot_x(rng.random()) @ translation(*rng.random(3)))
+            lb.add(Part("body", "box", [prim]), rot_x(rng.random()) @ translation(*(rng.random(3) - 0.5)))
+    return b.build("test", "test", 0, normalize=normalize)
+
+
+def test_link_poses_a_level_at_a_time_match_one_link_at_a_time():
+    objs = [_tree(True)] + [artipg.generate(c, s) for c in CATS for s in range(2)]
+    for obj in objs:
+        lim = obj.limits()
+        for qpos in (None, lim[:, 1], 0.3 * lim[:, 0] + 0.7 * lim[:, 1]):
+            assert same(obj.link_poses(qpos), _plain_link_poses(obj, qpos))
+
+
+def test_normalisation_shifts_poses_and_frames_like_the_plain_loop():
+    obj, raw = _tree(True), _tree(False)
+    b = raw.bounds()
+    c = (b[0] + b[1]) / 2.0
+    S = translation(-c[0], -c[1], -b[0, 2])
+    root = raw.links[0]
+    for part in root.parts:
+        part.pose = S @ part.pose
+    for j in raw.joints:
+        if j.parent == root.name:
+            j.origin = S @ j.origin
+    table = raw.primitive_table
+    m = table.prim_link == 0
+    table.prim_T[m] = S @ table.prim_T[m]
+    assert all(same(p.pose, q.pose) for p, q in zip(obj.parts, raw.parts))
+    assert all(same(j.origin, k.origin) for j, k in zip(obj.joints, raw.joints))
+    assert same(obj.primitive_table.prim_T, table.prim_T)

@@ -146,24 +146,28 @@ class ArticulatedObject:
 
     @cached_property
     def _levels(self) -> list[tuple]:
-        """The non-root links by depth: (links, their parents, their joints' indices)
-        per level, each a slice when contiguous (one parent: its index) else an array."""
+        """The non-root links by depth: (links, parent, joint indices, link indices) per
+        level, the first three slices or one parent's index when they can be, else arrays."""
         idx = self.link_index
-        depth = [0] * len(self.links)
-        parent = [0] * len(self.links)
-        for i in range(1, len(self.links)):
-            parent[i] = p = idx[self.links[i].joint.parent]
+        links = self.links
+        parent = [idx[lk.joint.parent] for lk in links[1:]]
+        n = len(parent)
+        if not any(parent):  # every link on the root: one level
+            return [(slice(1, n + 1), 0, slice(0, n), range(1, n + 1))] if n else []
+        depth = [0] * (n + 1)
+        for i, p in enumerate(parent, 1):
             if p >= i:
-                raise ValueError(f"link {self.links[i].name} comes before its parent")
+                raise ValueError(f"link {links[i].name} comes before its parent")
             depth[i] = depth[p] + 1
         out = []
-        for d in range(1, max(depth, default=0) + 1):
-            kids = [i for i in range(1, len(depth)) if depth[i] == d]
-            pars = sorted({parent[i] for i in kids})
-            contiguous = kids[-1] - kids[0] == len(kids) - 1
-            out.append((slice(kids[0], kids[-1] + 1) if contiguous else np.array(kids),
-                        pars[0] if len(pars) == 1 else np.array([parent[i] for i in kids]),
-                        slice(kids[0] - 1, kids[-1]) if contiguous else np.array(kids) - 1, kids))
+        for d in range(1, max(depth) + 1):
+            kids = [i for i in range(1, n + 1) if depth[i] == d]
+            pars = [parent[i - 1] for i in kids]
+            if kids[-1] - kids[0] == len(kids) - 1:
+                rows, joints = slice(kids[0], kids[-1] + 1), slice(kids[0] - 1, kids[-1])
+            else:
+                rows, joints = np.array(kids), np.array(kids) - 1
+            out.append((rows, pars[0] if min(pars) == max(pars) else np.array(pars), joints, kids))
         return out
 
     def link_poses(self, qpos=None) -> np.ndarray:
