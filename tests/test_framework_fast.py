@@ -63,7 +63,7 @@ def test_compiled_families_and_local_boxes_match_the_templates(name):
     cases = [P for n, P in _param_cases() if n == name] + [P for n, P in _object_groups(1) if n == name]
     for P in cases:
         table = _table([(GEOMS[name], np.ascontiguousarray(P, dtype=float))], rng)
-        assert table._packed is not None
+        assert table._packed is not None and table._compiled_boxes()
         assert _same_families(table), name
         assert same(table.local_boxes, table._plain_local_boxes()), name
 
@@ -84,7 +84,7 @@ def test_compiled_table_matches_the_numpy_table_on_objects(category):
     for seed in range(3):
         obj = artipg.generate(category, seed)
         table = obj.primitive_table
-        assert table._packed is not None and _same_families(table)
+        assert table._packed is not None and _same_families(table) and table._compiled_boxes()
         assert same(table.local_boxes, table._plain_local_boxes())
         plain = copy.copy(table)  # the same arrays, without the cached compiled results
         for k in ("local_boxes", "_local_centre_half", "families", "cell_areas", "cell_prim", "cell_p"):

@@ -8,6 +8,7 @@ frame with one gathered transform, so the cost hardly grows with the object.
 
 from __future__ import annotations
 
+import sys
 from dataclasses import dataclass
 from functools import cached_property
 from itertools import chain
@@ -105,6 +106,26 @@ class _Family:
     area: np.ndarray    # (K,) m^2
     start: int
     stop: int
+
+
+#: Geometry templates of a table's groups -> (their codes (G,), any ring or torus, any
+#: prism) for the compiled kernels, or None when one has no compiled twin.
+_KERNEL_INFO: dict[tuple, tuple | None] = {}
+
+
+def _kernel_info(geoms: tuple) -> tuple | None:
+    hit = _KERNEL_INFO.get(geoms, False)
+    if hit is not False:
+        return hit
+    from artipg.geometry.kernels import ARC_COLUMN, BOX_CODES, CODES
+
+    code = [CODES.get(g) for g in geoms]
+    info = None
+    if code and None not in code:
+        info = (np.array(code, dtype=np.int64), any(c in ARC_COLUMN for c in code), max(code) >= len(BOX_CODES))
+    if len(_KERNEL_INFO) < 4096:  # template combinations: a few dozen
+        _KERNEL_INFO[geoms] = info
+    return info
 
 
 class PrimitiveTable:
@@ -208,15 +229,22 @@ class PrimitiveTable:
         (G + 1,), global primitive index of each row (N,), template codes (G,), numpy's
         cos and sin of the packed parameters (F,), :data:`~artipg.geometry.kernels.TRIG`);
         None when a template has no compiled twin."""
-        from artipg.geometry.kernels import ARC_COLUMN, CODES, TRIG
-
-        code = [CODES.get(g.geom) for g in self.groups]
-        if None in code or not code:
+        info = _kernel_info(tuple(g.geom for g in self.groups))
+        if info is None:
             return None
+        from artipg.geometry.kernels import TRIG
+
+        code, arcs, _ = info
         flat = self._flat
         # the arcs of rings and tori are the only parameters whose cos and sin are read
-        trig = (np.cos(flat), np.sin(flat)) if any(c in ARC_COLUMN for c in code) else (flat, flat)
-        return (flat, np.array(self._foff), np.array(self._start), self._order, np.array(code)) + trig + (TRIG,)
+        trig = (np.cos(flat), np.sin(flat)) if arcs else (flat, flat)
+        return (flat, np.array(self._foff), np.array(self._start), self._order, code) + trig + (TRIG,)
+
+    def _compiled_boxes(self) -> bool:
+        """Whether local boxes and bounds take the compiled path: once numba is loaded
+        (by the patch families, the point draw or the checks), so that a process that
+        only generates objects never waits for numba's start (the results are the same)."""
+        return "numba" in sys.modules and self._packed is not None
 
     @cached_property
     def families(self) -> list[_Family]:
@@ -329,14 +357,14 @@ class PrimitiveTable:
     @cached_property
     def local_boxes(self) -> np.ndarray:
         """Bounding box (N, 2, 3) of every primitive in its own frame, by global index."""
-        packed = self._packed
-        if packed is None:
+        if not self._compiled_boxes():
             return self._plain_local_boxes()
         from artipg.geometry.kernels import BOX_CODES, local_boxes
 
+        packed = self._packed
         out = np.empty((self.n_prims, 2, 3))
         local_boxes(*packed, out)
-        if packed[4].max() >= len(BOX_CODES):  # prisms: their bounds_batch needs numpy's cos
+        if _kernel_info(tuple(g.geom for g in self.groups))[2]:  # prisms: bounds_batch needs numpy's cos
             for g, c in zip(self.groups, packed[4].tolist()):
                 if c >= len(BOX_CODES):
                     out[g.prim] = g.geom.bounds_batch(g.P)
@@ -357,7 +385,7 @@ class PrimitiveTable:
         """Bounding box (2, 3) of all primitives in the object frame (union of their
         transformed local boxes: exact for boxes, loose for rotated round solids)."""
         out = np.empty((2, 3))
-        if self._packed is None:
+        if not self._compiled_boxes():
             b = self.world_boxes(link_poses)
             b[:, 0].min(axis=0, out=out[0])
             b[:, 1].max(axis=0, out=out[1])
