@@ -105,12 +105,14 @@ def _affine_rows(T, P, out):
     row ``P[m]``, the value of ``A @ P.T + b`` in :func:`artipg.geometry.patches.linear`
     (and of ``P @ sides``, with b = 0). The sum starts from +0.0 like BLAS's, and
     leaving out the zero terms changes nothing: adding ±0 to it keeps it."""
+    nan = _poison(P)
     for r in range(T.shape[0]):
         i0, i1, a0, a1, b = int(T[r, 0]), int(T[r, 1]), T[r, 2], T[r, 3], T[r, 4]
         for m in range(P.shape[0]):
             acc = 0.0
             acc += a0 * P[m, i0]
             acc += a1 * P[m, i1]
+            acc += nan[m]
             out[r, m] = acc + b
 
 
@@ -134,6 +136,20 @@ def _push(fam, params, area, prim, buf, cnt):
 
 
 @numba.njit(cache=True)
+def _poison(P):
+    """Per row of ``P``, the sum of 0 times each parameter: ±0 (adding it changes nothing:
+    the sums it is added to are never -0) or NaN when a parameter is NaN or infinite,
+    which the zero coefficients that BLAS multiplies spread to every output."""
+    out = np.empty(P.shape[0])
+    for m in range(P.shape[0]):
+        z = 0.0
+        for k in range(P.shape[1]):
+            z += 0.0 * P[m, k]
+        out[m] = z
+    return out
+
+
+@numba.njit(cache=True)
 def _push_affine(fam, T, area, P, prim, buf, cnt):
     """:func:`_push` of a block whose parameters are the rows of sparse table ``T``
     (:func:`_sparse`, c p rows) applied to ``P`` (M, q), computed only for the kept cells."""
@@ -141,6 +157,7 @@ def _push_affine(fam, T, area, P, prim, buf, cnt):
     k = cnt[fam]
     c, M = area.shape
     p = T.shape[0] // c
+    nan = _poison(P)
     for i in range(c):
         for m in range(M):
             a = area[i, m]
@@ -150,11 +167,24 @@ def _push_affine(fam, T, area, P, prim, buf, cnt):
                     acc = 0.0
                     acc += T[r, 2] * P[m, int(T[r, 0])]
                     acc += T[r, 3] * P[m, int(T[r, 1])]
+                    acc += nan[m]
                     pb[j, k] = acc + T[r, 4]
                 ab[k] = a
                 ib[k] = prim[m]
                 k += 1
     cnt[fam] = k
+
+
+@numba.njit(cache=True)
+def _min(a, b):
+    """``np.minimum`` of two floats (NaN if either is)."""
+    return a if a <= b or a != a else b
+
+
+@numba.njit(cache=True)
+def _max(a, b):
+    """``np.maximum`` of two floats (NaN if either is)."""
+    return a if a >= b or a != a else b
 
 
 @numba.njit(cache=True)
@@ -276,7 +306,7 @@ def _sphere(P, prim, buf, cnt):
         for k in range(2):
             z = lo if k == 0 else hi
             v = R * R - z * z
-            r1 = math.sqrt(v if v >= 0.0 else 0.0)
+            r1 = math.sqrt(_max(v, 0.0))
             q = caps[k, :, m]
             q[2], q[3], q[7] = z, 1.0, 1.0
             q[11] = -1.0 if k == 0 else 1.0
@@ -483,7 +513,7 @@ def _arc_box(out, r_lo, r_hi, arc, ca, sa, trig, z0, z1):
     numpy's cos and sin of min(arc, 2π), ``trig`` is :data:`TRIG`."""
     out[0, 2] = z0
     out[1, 2] = z1
-    a = arc if arc <= TWO_PI else TWO_PI
+    a = _min(arc, TWO_PI)
     for ax in range(2):
         lo, hi = np.inf, -np.inf
         for j in range(5):  # the angles 0, arc and the quarter turns inside the arc
@@ -497,8 +527,8 @@ def _arc_box(out, r_lo, r_hi, arc, ca, sa, trig, z0, z1):
                 t = trig[ax, j - 1]
             for r in (r_lo, r_hi):
                 v = t * r
-                lo = min(lo, v)
-                hi = max(hi, v)
+                lo = _min(lo, v)
+                hi = _max(hi, v)
         out[0, ax] = lo
         out[1, ax] = hi
 
@@ -506,7 +536,7 @@ def _arc_box(out, r_lo, r_hi, arc, ca, sa, trig, z0, z1):
 @numba.njit(cache=True)
 def _arc_trig(C, S, trig, m, col, arc):
     """numpy's cos and sin of min(arc, 2π) for row m: the packed ones below 2π."""
-    if arc < TWO_PI:
+    if not arc >= TWO_PI:
         return C[m, col], S[m, col]
     return trig[0, 4], trig[1, 4]
 
@@ -535,17 +565,17 @@ def local_boxes(flat, foff, start, prim, code, cos_f, sin_f, trig, out):
                     b[1, k] = p[k] * 0.5
                     b[0, k] = -b[1, k]
             elif c == 2:
-                r = p[0] if p[0] >= p[1] else p[1]
+                r = _max(p[0], p[1])
                 b[1, 0], b[1, 1], b[1, 2] = r, r, p[2] * 0.5
                 for k in range(3):
                     b[0, k] = -b[1, k]
             elif c == 3:
                 ro, ri, h, arc, tp = p[0], p[1], p[2], p[3], p[4]
-                r_hi = ro if ro >= ro + tp else ro + tp
+                r_hi = _max(ro, ro + tp)
                 if full:
                     _turn_box(b, r_hi, -h / 2, h / 2)
                 else:
-                    r_lo = ri if ri <= ri + tp else ri + tp
+                    r_lo = _min(ri, ri + tp)
                     ca, sa = _arc_trig(C, S, trig, m, 3, arc)
                     _arc_box(b, r_lo, r_hi, arc, ca, sa, trig, -h / 2, h / 2)
             elif c == 4:
@@ -553,9 +583,7 @@ def local_boxes(flat, foff, start, prim, code, cos_f, sin_f, trig, out):
                 if lo <= 0 and hi >= 0:
                     r = R
                 else:
-                    z2 = lo * lo if lo * lo <= hi * hi else hi * hi
-                    v = R * R - z2
-                    r = math.sqrt(v if v >= 0.0 else 0.0)
+                    r = math.sqrt(_max(R * R - _min(lo * lo, hi * hi), 0.0))
                 b[1, 0], b[1, 1], b[0, 0], b[0, 1] = r, r, -r, -r
                 b[0, 2], b[1, 2] = lo, hi
             elif c == 5:
@@ -586,7 +614,7 @@ def box_union(Rc, Rh, W, out):
         lo, hi = np.inf, -np.inf
         for i in range(Rc.shape[0]):
             wc = Rc[i, k, 0] + W[i, k, 3]
-            lo = min(lo, wc - Rh[i, k, 0])
-            hi = max(hi, wc + Rh[i, k, 0])
+            lo = _min(lo, wc - Rh[i, k, 0])
+            hi = _max(hi, wc + Rh[i, k, 0])
         out[0, k] = lo
         out[1, k] = hi
