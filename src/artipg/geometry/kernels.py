@@ -13,11 +13,15 @@ template by template. Three things make that hold:
 - the affine patch tables (:func:`artipg.geometry.patches.linear`) have at most two
   non-zero coefficients per row, each ±1/2 or ±1, so the matrix product numpy hands to
   BLAS is one correctly rounded sum of exact products whatever order BLAS adds in;
-  :func:`_affine_rows` adds them from +0.0 like the BLAS kernels do;
+  :func:`_affine_rows` adds them from +0.0 like the BLAS kernels do, and spreads a NaN
+  or infinite parameter to the whole row as BLAS's zero products do (:func:`_poison`);
 - only cells with a positive area are kept, as ``PrimitiveTable.families`` does, so a
   template may skip a block that numpy builds full of zero areas.
 
-Import it lazily: numba itself takes half a second to import.
+The matrix products of poses (4 x 4 and 3 x 3, BLAS) stay with numpy: BLAS kernels
+differ between machines (fused multiply-adds, summation order), so nothing here may
+replace one. Import this module lazily: numba itself takes half a second to import, and
+loading these kernels from numba's cache another tenth of a second.
 """
 
 from __future__ import annotations
@@ -90,7 +94,7 @@ def _sparse(table: np.ndarray) -> np.ndarray:
 
 
 #: The constant inputs of :func:`families`, in its argument order.
-TABLES = (_sparse(_BOX_TABLE), _sparse(_RING_TABLE), _sparse(np.concatenate([_RING_SIDES.T, np.zeros((32, 1))], axis=1)),
+TABLES = (_sparse(_BOX_TABLE), _sparse(_RING_TABLE), _sparse(np.concatenate([_RING_SIDES.T, np.zeros((32, 1))], 1)),
           _sparse(_FRUSTUM_CAPS), _sparse(_RING_CAPS), _prism_trig())
 #: numpy's cos (row 0) and sin (row 1) of 0, the quarter turns that
 #: :func:`artipg.geometry.revolve._arc_bounds_batch` tests, and 2π.
