@@ -8,11 +8,14 @@ frame with one gathered transform, so the cost hardly grows with the object.
 
 from __future__ import annotations
 
+import sys
 from dataclasses import dataclass
 from functools import cached_property
+from itertools import chain
 
 import numpy as np
 
+from artipg.geometry.base import TWO_PI
 from artipg.geometry.patches import FAMILIES, sample_family
 from artipg.rules.streams import streams
 from artipg.vocabulary import SEMANTIC_LABELS, label_id
@@ -46,7 +49,7 @@ class _Group:
     geom : type
         The geometry template.
     P : (M, p) ndarray
-        Parameters.
+        Parameters (a view of the table's packed parameters).
     prim : (M,) int64
         Global primitive index of each row.
     T : (M, 4, 4) ndarray
@@ -55,11 +58,22 @@ class _Group:
         Link index and part index (instance id).
     """
 
-    def __init__(self, table: "PrimitiveTable", geom: type, P: np.ndarray, prim: np.ndarray):
+    def __init__(self, table: "PrimitiveTable", geom: type, index: int):
         self._table = table
         self.geom = geom
-        self.P = P
-        self.prim = prim
+        self._index = index
+
+    @cached_property
+    def P(self) -> np.ndarray:
+        t, g = self._table, self._index
+        M = t._start[g + 1] - t._start[g]
+        a, b = t._foff[g], t._foff[g + 1]
+        return t._flat[a:b].reshape(M, (b - a) // M)
+
+    @cached_property
+    def prim(self) -> np.ndarray:
+        t, g = self._table, self._index
+        return t._order[t._start[g]:t._start[g + 1]]
 
     @cached_property
     def T(self) -> np.ndarray:
@@ -96,8 +110,41 @@ class _Family:
     stop: int
 
 
+#: Geometry templates of a table's groups -> (their codes (G,), any ring or torus, any
+#: prism) for the compiled kernels, or None when one has no compiled twin.
+_KERNEL_INFO: dict[tuple, tuple | None] = {}
+
+
+def _kernel_info(geoms: tuple) -> tuple | None:
+    hit = _KERNEL_INFO.get(geoms, False)
+    if hit is not False:
+        return hit
+    from artipg.geometry.kernels import ARC_COLUMN, BOX_CODES, CODES
+
+    code = [CODES.get(g) for g in geoms]
+    info = None
+    if code and None not in code:
+        info = (np.array(code, dtype=np.int64), any(c in ARC_COLUMN for c in code), max(code) >= len(BOX_CODES))
+    if len(_KERNEL_INFO) < 4096:  # template combinations: a few dozen
+        _KERNEL_INFO[geoms] = info
+    return info
+
+
 class PrimitiveTable:
     """An object's primitives, grouped by geometry template, in their link frames.
+
+    Parameters
+    ----------
+    geoms : list of type
+        The geometry template of each group, in order of first appearance.
+    flat : (F,) ndarray
+        Parameters of the groups' rows one after the other (row-major within a group).
+    start, foff : list of int
+        Group g is rows ``start[g]:start[g + 1]`` of ``order`` and ``flat[foff[g]:foff[g + 1]]``.
+    order : (N,) int64
+        Global primitive index of every row, groups one after the other.
+    prim_T, prim_link, prim_part, part_semantic
+        The attributes below.
 
     Attributes
     ----------
@@ -111,9 +158,14 @@ class PrimitiveTable:
     prim_link, prim_part : (N,) int64
     """
 
-    def __init__(self, groups: list[tuple[type, np.ndarray, np.ndarray]], prim_T: np.ndarray,
-                 prim_link: np.ndarray, prim_part: np.ndarray, part_semantic: np.ndarray):
-        self.groups = [_Group(self, geom, P, prim) for geom, P, prim in groups]
+    def __init__(self, geoms: list[type], flat: np.ndarray, start: list[int], foff: list[int], order: np.ndarray,
+                 prim_T: np.ndarray, prim_link: np.ndarray, prim_part: np.ndarray, part_semantic: np.ndarray):
+        self.groups = [_Group(self, geom, g) for g, geom in enumerate(geoms)]
+        self._cells = None  # (cell areas, cell primitives) when the families give them whole
+        self._flat = flat
+        self._start = start
+        self._foff = foff
+        self._order = order
         self.n_prims = len(prim_T)
         self.prim_T = prim_T
         self.prim_link = prim_link
@@ -133,8 +185,11 @@ class PrimitiveTable:
                 prims += part.primitives
         prim_part = np.arange(len(counts)).repeat(counts)
         prim_link = np.array(part_link, dtype=np.int64).repeat(counts)
+        sem = np.array(sem, dtype=np.int64)
+        n_root = sum(counts[:len(obj.links[0].parts)]) if obj.links else 0
         if not prims:
-            return cls([], np.zeros((0, 4, 4)), prim_link, prim_part, np.array(sem, dtype=np.int64))
+            return cls([], np.zeros(0), [0], [0], np.zeros(0, dtype=np.int64), np.zeros((0, 4, 4)), prim_link,
+                       prim_part, sem)
         geoms, params, poses = list(zip(*prims))[:3]
         # concatenating (4, 4) arrays is about twice as fast as np.array on a list of them
         prim_T = (np.concatenate(part_poses).reshape(-1, 4, 4)[prim_part]
@@ -142,20 +197,78 @@ class PrimitiveTable:
         # rows of each geometry template, templates in order of first appearance
         first: dict = {}
         gid = [first.setdefault(g, len(first)) for g in geoms]
+        N = len(prims)
         if len(first) == 1:
-            groups = [(geoms[0], np.array(params, dtype=float), np.arange(len(prims)))]
+            start, order = [0, N], np.arange(N)
+            rows = params
         else:
-            rows: list[list[int]] = [[] for _ in first]
+            by_group: list[list[int]] = [[] for _ in first]
             for i, j in enumerate(gid):
-                rows[j].append(i)
-            groups = [(geoms[r[0]], np.array([params[i] for i in r], dtype=float), np.array(r, dtype=np.int64))
-                      for r in rows]
-        return cls(groups, prim_T, prim_link, prim_part, np.array(sem, dtype=np.int64))
+                by_group[j].append(i)
+            start = [0]
+            for r in by_group:
+                start.append(start[-1] + len(r))
+            idx = [i for r in by_group for i in r]
+            order = np.array(idx, dtype=np.int64)
+            rows = [params[i] for i in idx]
+        # every row of a group has its template's parameter count (numpy would refuse ragged rows)
+        foff = [0]
+        for g in range(len(first)):
+            width = len(rows[start[g]])
+            foff.append(foff[-1] + width * (start[g + 1] - start[g]))
+        if sum(map(len, rows)) != foff[-1]:
+            raise ValueError("primitives of one geometry template have different parameter counts")
+        flat = np.fromiter(chain.from_iterable(rows), float, foff[-1])
+        table = cls(list(first), flat, start, foff, order, prim_T, prim_link, prim_part, sem)
+        table._n_root = n_root
+        return table
 
     # ------------------------------------------------------------ patches
     @cached_property
+    def _packed(self) -> tuple | None:
+        """The groups as the compiled kernels (:mod:`artipg.geometry.kernels`) take them:
+        (packed parameters (F,), their group offsets (G + 1,), group row offsets
+        (G + 1,), global primitive index of each row (N,), template codes (G,), numpy's
+        cos and sin of the packed parameters (F,), :data:`~artipg.geometry.kernels.TRIG`);
+        None when a template has no compiled twin."""
+        info = _kernel_info(tuple(g.geom for g in self.groups))
+        if info is None:
+            return None
+        from artipg.geometry.kernels import TRIG
+
+        code, arcs, _ = info
+        flat = self._flat
+        # the arcs of rings and tori are the only parameters whose cos and sin are read
+        trig = (np.cos(flat), np.sin(flat)) if arcs else (flat, flat)
+        return (flat, np.array(self._foff), np.array(self._start), self._order, code) + trig + (TRIG,)
+
+    def _compiled_boxes(self) -> bool:
+        """Whether local boxes and bounds take the compiled path: once numba is loaded
+        (by the patch families, the point draw or the checks), so that a process that
+        only generates objects never waits for numba's start (the results are the same)."""
+        return "numba" in sys.modules and self._packed is not None
+
+    @cached_property
     def families(self) -> list[_Family]:
         """Non-empty patch families in :data:`FAMILIES` order (cells with area > 0)."""
+        packed = self._packed
+        if packed is None:
+            return self._plain_families()
+        from artipg.geometry.kernels import TABLES, families
+
+        params, area, prim, counts = families(*packed, *TABLES)
+        out = []
+        start = 0
+        for name, P, k in zip(FAMILIES, params, counts.tolist()):
+            if k:
+                out.append(_Family(name, P, prim[start:start + k], area[start:start + k], start, start + k))
+                start += k
+        if out:
+            self._cells = (area, prim)
+        return out
+
+    def _plain_families(self) -> list[_Family]:
+        """:attr:`families` from the templates' ``patches`` (numpy): the definition."""
         found: dict[str, list] = {}
         for g in self.groups:
             for b in g.geom.patches(g.P):
@@ -193,12 +306,16 @@ class PrimitiveTable:
     def cell_areas(self) -> np.ndarray:
         """Area (K,) of every patch cell, m^2, in family order."""
         fams = self.families
+        if self._cells is not None:  # the compiled families return them whole
+            return self._cells[0]
         return np.concatenate([f.area for f in fams]) if len(fams) != 1 else fams[0].area
 
     @cached_property
     def cell_prim(self) -> np.ndarray:
         """Global primitive index (K,) of every patch cell."""
         fams = self.families
+        if self._cells is not None:
+            return self._cells[1]
         return np.concatenate([f.prim for f in fams]) if len(fams) != 1 else fams[0].prim
 
     @cached_property
@@ -217,7 +334,8 @@ class PrimitiveTable:
     @cached_property
     def cell_p(self) -> np.ndarray:
         """Multinomial probabilities (K,) of the cells: proportional to area."""
-        return self.cell_areas / self.cell_areas.sum()
+        a = self.cell_areas
+        return a / a.sum()
 
     def part_cell_p(self, parts) -> np.ndarray:
         """Cell probabilities restricted to the primitives of ``parts`` (instance ids)."""
@@ -230,10 +348,18 @@ class PrimitiveTable:
     # ------------------------------------------------------------ frames and boxes
     def shift_root(self, S: np.ndarray) -> None:
         """Apply object-frame transform ``S`` to every root-link primitive."""
-        m = self.prim_link == 0
-        self.prim_T[m] = S @ self.prim_T[m]
+        n = self._n_root
+        self.prim_T[:n] = S @ self.prim_T[:n]
         for g in self.groups:
             g.__dict__.pop("T", None)
+
+    @cached_property
+    def _n_root(self) -> int:
+        """Number of root-link primitives: they come first (parts are in link order)."""
+        n = int(np.count_nonzero(self.prim_link == 0))
+        if not (self.prim_link[:n] == 0).all():
+            raise ValueError("primitives are not in link order")
+        return n
 
     def world_all(self, link_poses: np.ndarray) -> np.ndarray:
         """Poses (M, 3, 4) of all primitives in the object frame, by global index."""
@@ -246,8 +372,21 @@ class PrimitiveTable:
     @cached_property
     def local_boxes(self) -> np.ndarray:
         """Bounding box (N, 2, 3) of every primitive in its own frame, by global index."""
-        if len(self.groups) == 1:
-            return self.groups[0].geom.bounds_batch(self.groups[0].P)
+        if not self._compiled_boxes():
+            return self._plain_local_boxes()
+        from artipg.geometry.kernels import BOX_CODES, local_boxes
+
+        packed = self._packed
+        out = np.empty((self.n_prims, 2, 3))
+        local_boxes(*packed, out)
+        if _kernel_info(tuple(g.geom for g in self.groups))[2]:  # prisms: bounds_batch needs numpy's cos
+            for g, c in zip(self.groups, packed[4].tolist()):
+                if c >= len(BOX_CODES):
+                    out[g.prim] = g.geom.bounds_batch(g.P)
+        return out
+
+    def _plain_local_boxes(self) -> np.ndarray:
+        """:attr:`local_boxes` from the templates' ``bounds_batch`` (numpy): the definition."""
         out = np.empty((self.n_prims, 2, 3))
         for g in self.groups:
             out[g.prim] = g.geom.bounds_batch(g.P)
@@ -260,10 +399,28 @@ class PrimitiveTable:
     def bounds(self, link_poses: np.ndarray) -> np.ndarray:
         """Bounding box (2, 3) of all primitives in the object frame (union of their
         transformed local boxes: exact for boxes, loose for rotated round solids)."""
-        b = self.world_boxes(link_poses)
         out = np.empty((2, 3))
-        b[:, 0].min(axis=0, out=out[0])
-        b[:, 1].max(axis=0, out=out[1])
+        if not self._compiled_boxes():
+            b = self.world_boxes(link_poses)
+            b[:, 0].min(axis=0, out=out[0])
+            b[:, 1].max(axis=0, out=out[1])
+            return out
+        from artipg.geometry.kernels import box_union
+
+        # transform_boxes and the union, with its two matrix products left to numpy (BLAS)
+        W = self.world_all(link_poses)
+        c, h = self._local_centre_half
+        R = W[:, :3, :3]
+        box_union(R @ c[:, :, None], np.abs(R) @ h[:, :, None], W, out)
+        return out
+
+    @cached_property
+    def _local_centre_half(self) -> np.ndarray:
+        """Centres and half extents (2, N, 3) of :attr:`local_boxes` (compiled path only)."""
+        from artipg.geometry.kernels import centre_half
+
+        out = np.empty((2, self.n_prims, 3))
+        centre_half(self.local_boxes, out)
         return out
 
 

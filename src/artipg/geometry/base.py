@@ -55,7 +55,11 @@ class GeometryTemplate:
     @classmethod
     def patches(cls, P: np.ndarray) -> list:  # pragma: no cover - abstract
         """The surface as :class:`artipg.geometry.patches.Patch` blocks, for rows of ``P``
-        (M, p); patch areas of component c sum to ``component_areas(P)[:, c]``."""
+        (M, p); patch areas of component c sum to ``component_areas(P)[:, c]``.
+
+        The templates of :data:`artipg.geometry.kernels.CODES` have a compiled twin of
+        this and of :meth:`bounds_batch` there, which objects use: change both
+        (tests/test_framework_fast.py compares them bit for bit)."""
         raise NotImplementedError
 
     @classmethod
@@ -186,6 +190,19 @@ def corners_bounds(b: np.ndarray, T: np.ndarray) -> np.ndarray:
     c = b[0] + _CORNER_SIGNS * (b[1] - b[0])
     w = c @ T[:3, :3].T + T[:3, 3]
     return np.stack([w.min(axis=0), w.max(axis=0)])
+
+
+def corners_bounds_union(B: np.ndarray, T: np.ndarray) -> np.ndarray:
+    """Bounding box (2, 3) of the union of boxes ``B`` (M, 2, 3) after transforms ``T``
+    (M, 4, 4): the same values as the union of :func:`corners_bounds` of each pair
+    (each slice of the stacked product is the same matrix product), in a few calls."""
+    c = B[:, :1] + _CORNER_SIGNS * (B[:, 1:] - B[:, :1])  # (M, 8, 3)
+    w = c @ T[:, :3, :3].transpose(0, 2, 1)
+    w += T[:, None, :3, 3]
+    out = np.empty((2, 3))
+    w.min(axis=(0, 1), out=out[0])
+    w.max(axis=(0, 1), out=out[1])
+    return out
 
 
 def boxes(lo, hi) -> np.ndarray:

@@ -71,18 +71,19 @@ class Tube:
 
     def primitives(self, pose: np.ndarray = IDENTITY, role: str = "") -> list[Primitive]:
         """The tube as open cylinders and torus arcs, capped at both ends, in ``pose``."""
-        out = []
         n = len(self.segments)
         r = self.r
+        kinds, params, frames = [], [], []
         for i, (seg, (x, z), a) in enumerate(self._walk()):
             c0, c1 = float(i == 0), float(i == n - 1)
             ca, sa = math.cos(a), math.sin(a)
             if seg[0] == "line":
                 L = seg[1]
                 # local z -> heading (ca, 0, sa); local x -> (sa, 0, -ca); local y -> y
-                T = np.array([[sa, 0.0, ca, x + ca * L / 2], [0.0, 1.0, 0.0, 0.0],
-                              [-ca, 0.0, sa, z + sa * L / 2], [0.0, 0.0, 0.0, 1.0]])
-                out.append(Primitive(Frustum, (r, r, L, c0, c1), pose @ T, role))
+                frames += (sa, 0.0, ca, x + ca * L / 2, 0.0, 1.0, 0.0, 0.0,
+                           -ca, 0.0, sa, z + sa * L / 2, 0.0, 0.0, 0.0, 1.0)
+                kinds.append(Frustum)
+                params.append((r, r, L, c0, c1))
             else:
                 R, turn = seg[1], seg[2]
                 sg = 1.0 if turn > 0 else -1.0
@@ -91,10 +92,13 @@ class Tube:
                 ex = ((x - cx) / R, 0.0, (z - cz) / R)  # local x: centre -> start
                 ey = (ca, 0.0, sa)  # local y: heading at the start
                 ez = (ex[1] * ey[2] - ex[2] * ey[1], ex[2] * ey[0] - ex[0] * ey[2], ex[0] * ey[1] - ex[1] * ey[0])
-                T = np.array([[ex[0], ey[0], ez[0], cx], [ex[1], ey[1], ez[1], 0.0],
-                              [ex[2], ey[2], ez[2], cz], [0.0, 0.0, 0.0, 1.0]])
-                out.append(Primitive(Torus, (R, r, abs(turn), c0, c1), pose @ T, role))
-        return out
+                frames += (ex[0], ey[0], ez[0], cx, ex[1], ey[1], ez[1], 0.0,
+                           ex[2], ey[2], ez[2], cz, 0.0, 0.0, 0.0, 1.0)
+                kinds.append(Torus)
+                params.append((R, r, abs(turn), c0, c1))
+        # one stacked product places every piece (the same 4x4 product for each)
+        placed = pose @ np.array(frames).reshape(n, 4, 4)
+        return [Primitive(g, p, T, role) for g, p, T in zip(kinds, params, placed)]
 
     def _stations(self, step: float = math.pi / 16):
         """Centre-line stations (point (3,), heading) for the loft."""

@@ -144,20 +144,52 @@ class ArticulatedObject:
             raise ValueError(f"qpos has {len(q)} values, object has {len(mv)} movable joints")
         return {j.name: float(v) for j, v in zip(mv, q)}
 
+    @cached_property
+    def _levels(self) -> list[tuple]:
+        """The non-root links by depth: (links, parent, joint indices, link indices) per
+        level, the first three slices or one parent's index when they can be, else arrays."""
+        idx = self.link_index
+        links = self.links
+        parent = [idx[lk.joint.parent] for lk in links[1:]]
+        n = len(parent)
+        if not any(parent):  # every link on the root: one level
+            return [(slice(1, n + 1), 0, slice(0, n), range(1, n + 1))] if n else []
+        depth = [0] * (n + 1)
+        for i, p in enumerate(parent, 1):
+            if p >= i:
+                raise ValueError(f"link {links[i].name} comes before its parent")
+            depth[i] = depth[p] + 1
+        out = []
+        for d in range(1, max(depth) + 1):
+            kids = [i for i in range(1, n + 1) if depth[i] == d]
+            pars = [parent[i - 1] for i in kids]
+            if kids[-1] - kids[0] == len(kids) - 1:
+                rows, joints = slice(kids[0], kids[-1] + 1), slice(kids[0] - 1, kids[-1])
+            else:
+                rows, joints = np.array(kids), np.array(kids) - 1
+            out.append((rows, pars[0] if min(pars) == max(pars) else np.array(pars), joints, kids))
+        return out
+
     def link_poses(self, qpos=None) -> np.ndarray:
         """Pose (L, 4, 4) of every link in the object frame at joint state ``qpos``."""
         q = self.qpos_dict(qpos)
-        idx = self.link_index
         links = self.links
         T = np.empty((len(links), 4, 4))
         T[0] = IDENTITY
-        for i in range(1, len(links)):
-            j = links[i].joint
-            v = q.get(j.name, 0.0) if q else 0.0
-            if v:
-                T[i] = (T[idx[j.parent]] @ j.origin) @ j.motion(v)
-            else:
-                _matmul(T[idx[j.parent]], j.origin, out=T[i])
+        if len(links) == 1:
+            return T
+        # a level at a time: T[link] = T[parent] @ origin for all its links at once (the
+        # same product for each), then the moved ones times their motion
+        origins = np.concatenate([lk.joint.origin for lk in links[1:]]).reshape(-1, 4, 4)
+        for kids, parents, joints, members in self._levels:
+            A = T[parents] @ origins[joints]
+            if q:
+                for k, i in enumerate(members):
+                    j = links[i].joint
+                    v = q.get(j.name, 0.0)
+                    if v:
+                        A[k] = A[k] @ j.motion(v)
+            T[kids] = A
         return T
 
     def part_poses(self, qpos=None) -> np.ndarray:

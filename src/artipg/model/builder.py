@@ -122,10 +122,18 @@ class ObjectBuilder:
             c = (b[0] + b[1]) / 2.0
             S = translation(-c[0], -c[1], -b[0, 2])
             root = links[0]
-            for part in root.parts:
-                part.pose = S @ part.pose
-            for j in obj.joints:
-                if j.parent == root.name:
-                    j.origin = S @ j.origin
+            # one stacked product each (the same 4x4 products); the poses become its slices
+            if root.parts:
+                for part, T in zip(root.parts, S @ _stack([part.pose for part in root.parts])):
+                    part.pose = T
+            kids = [j for j in obj.joints if j.parent == root.name]
+            if kids:
+                for j, T in zip(kids, S @ _stack([j.origin for j in kids])):
+                    j.origin = T
             obj.primitive_table.shift_root(S)
         return obj
+
+
+def _stack(poses: list) -> np.ndarray:
+    """(n, 4, 4) array of (4, 4) poses (concatenating is faster than np.array)."""
+    return np.concatenate(poses).reshape(-1, 4, 4)

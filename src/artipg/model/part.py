@@ -6,7 +6,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from artipg.geometry.base import Primitive
+from artipg.geometry.base import Primitive, corners_bounds_union
 from artipg.geometry.transforms import IDENTITY
 from artipg.vocabulary import ACTIONABLE_ID, AFFORDANCES, LABEL_ID, label_id
 
@@ -48,7 +48,6 @@ class _Factory:
 
 
 _FACTORY = _Factory()
-_min, _max = np.minimum.reduce, np.maximum.reduce
 _AFFORDANCE_SET = frozenset(AFFORDANCES)
 
 
@@ -131,11 +130,9 @@ class Part:
 
     def bounds(self) -> np.ndarray:
         """Bounding box (2, 3) of the part in its own frame."""
-        b = np.array([p.bounds() for p in self.primitives])
-        out = np.empty((2, 3))
-        _min(b[:, 0], axis=0, out=out[0])
-        _max(b[:, 1], axis=0, out=out[1])
-        return out
+        prims = self.primitives
+        B = np.array([p.geom.bounds(p.params) for p in prims])
+        return corners_bounds_union(B, np.concatenate([p.pose for p in prims]).reshape(-1, 4, 4))
 
     def canonical_size(self) -> np.ndarray:
         """Extents (3,) of the part along its canonical axes."""

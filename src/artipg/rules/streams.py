@@ -98,11 +98,11 @@ class Streams:
     rewinds the shared generator. Use as ``with streams(seed) as s: rng = s.open(key)``.
     """
 
-    def __init__(self, seed: int, bitgen: np.random.PCG64):
+    def __init__(self, seed: int, bitgen: np.random.PCG64, gen: np.random.Generator | None = None):
         self.seed = int(seed)
         self._words = _pcg_words(self.seed)
         self._bitgen = bitgen
-        self._gen = np.random.Generator(bitgen)
+        self._gen = np.random.Generator(bitgen) if gen is None else gen
 
     def open(self, key: int) -> np.random.Generator:
         """The generator positioned at the start of stream ``key`` (0 <= key < 2**32)."""
@@ -122,7 +122,7 @@ class streams:
     generator, so the two never share state.
     """
 
-    __slots__ = ("seed", "_pool", "_bitgen")
+    __slots__ = ("seed", "_pool", "_gen")
 
     def __init__(self, seed: int):
         self.seed = seed
@@ -132,12 +132,13 @@ class streams:
         if pool is None:
             pool = _POOL.free = []
         self._pool = pool
-        self._bitgen = pool.pop() if pool else np.random.PCG64(0)
+        # a Generator on a PCG64, kept together: making the Generator costs as much as a draw
+        self._gen = pool.pop() if pool else np.random.Generator(np.random.PCG64(0))
         try:
-            return Streams(self.seed, self._bitgen)
+            return Streams(self.seed, self._gen.bit_generator, self._gen)
         except BaseException:
-            pool.append(self._bitgen)
+            pool.append(self._gen)
             raise
 
     def __exit__(self, *exc) -> None:
-        self._pool.append(self._bitgen)
+        self._pool.append(self._gen)

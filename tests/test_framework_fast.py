@@ -1,0 +1,188 @@
+"""The framework's fast paths give the bits of the plain computations they replace:
+Part.bounds' stacked corners, and the compiled (numba) twins of the templates' patches
+and local boxes that PrimitiveTable uses (artipg.geometry.kernels)."""
+
+from __future__ import annotations
+
+import copy
+
+import numpy as np
+import pytest
+
+import artipg
+from artipg.annotate.points import PrimitiveTable
+from artipg.geometry import cuboid
+from artipg.geometry.transforms import rot_x, rot_z, translation
+from artipg.model import ObjectBuilder, Part
+from test_points_fast import GEOMS, _object_groups, _param_cases, _random_params, same
+
+
+CATS = artipg.categories()
+
+
+@pytest.mark.parametrize("category", CATS)
+def test_part_bounds_is_the_union_of_the_primitive_bounds(category):
+    for seed in range(3):
+        for part in artipg.generate(category, seed).parts:
+            b = np.array([p.bounds() for p in part.primitives])
+            plain = np.stack([b[:, 0].min(axis=0), b[:, 1].max(axis=0)])
+            assert same(part.bounds(), plain), part.name
+
+
+# ---------------------------------------------------------------- compiled patch families and boxes
+
+def _table(geoms_params: list, rng) -> PrimitiveTable:
+    """A table whose groups are ``(geom, P)`` pairs, rows dealt to shuffled global indices."""
+    N = sum(len(P) for _, P in geoms_params)
+    order = rng.permutation(N)
+    start, foff, flat = [0], [0], []
+    for _, P in geoms_params:
+        start.append(start[-1] + len(P))
+        foff.append(foff[-1] + P.size)
+        flat.append(P.ravel())
+    T = np.tile(np.eye(4), (N, 1, 1))
+    T[:, :3, 3] = rng.random((N, 3))
+    return PrimitiveTable([g for g, _ in geoms_params], np.concatenate(flat), start, foff, order, T,
+                          np.zeros(N, dtype=np.int64), np.zeros(N, dtype=np.int64), np.zeros(1, dtype=np.int64))
+
+
+def _same_families(table) -> bool:
+    got, want = table.families, table._plain_families()
+    return len(got) == len(want) and all(
+        (g.name, g.start, g.stop) == (w.name, w.start, w.stop) and same(g.params, w.params)
+        and same(g.prim, w.prim) and same(g.area, w.area) for g, w in zip(got, want)) \
+        and same(table.cell_areas, np.concatenate([w.area for w in want])) \
+        and same(table.cell_prim, np.concatenate([w.prim for w in want]))
+
+
+@pytest.mark.parametrize("name", sorted(GEOMS))
+def test_compiled_families_and_local_boxes_match_the_templates(name):
+    """Every template's compiled twin, on the edge cases of test_points_fast (cones, open
+    caps, partial and full arcs, tapers, cut spheres, mixed prism side counts...)."""
+    rng = np.random.default_rng(11)
+    cases = [P for n, P in _param_cases() if n == name] + [P for n, P in _object_groups(1) if n == name]
+    for P in cases:
+        table = _table([(GEOMS[name], np.ascontiguousarray(P, dtype=float))], rng)
+        assert table._packed is not None and table._compiled_boxes()
+        assert _same_families(table), name
+        assert same(table.local_boxes, table._plain_local_boxes()), name
+
+
+def test_compiled_families_and_local_boxes_match_on_mixed_tables():
+    """Several templates in one table, in every order, rows scattered over the indices."""
+    rng = np.random.default_rng(12)
+    names = sorted(GEOMS)
+    for _ in range(40):
+        picked = rng.permutation(names)[:int(rng.integers(1, len(names) + 1))]
+        table = _table([(GEOMS[n], _random_params(n, int(rng.integers(1, 9)), rng)) for n in picked], rng)
+        assert _same_families(table)
+        assert same(table.local_boxes, table._plain_local_boxes())
+
+
+@pytest.mark.parametrize("category", CATS)
+def test_compiled_table_matches_the_numpy_table_on_objects(category):
+    for seed in range(3):
+        obj = artipg.generate(category, seed)
+        table = obj.primitive_table
+        assert table._packed is not None and _same_families(table) and table._compiled_boxes()
+        assert same(table.local_boxes, table._plain_local_boxes())
+        plain = copy.copy(table)  # the same arrays, without the cached compiled results
+        for k in ("local_boxes", "_local_centre_half", "families", "cell_areas", "cell_prim", "cell_p"):
+            plain.__dict__.pop(k, None)
+        plain._packed = None  # the numpy path throughout
+        for qpos in (None, obj.limits()[:, 1], 0.3 * obj.limits()[:, 0] + 0.7 * obj.limits()[:, 1]):
+            L = obj.link_poses(qpos)
+            assert same(table.bounds(L), plain.bounds(L))
+        assert same(table.world_boxes(L), plain.world_boxes(L))
+
+
+def test_compiled_tables_take_only_exact_affine_rows():
+    """The compiled affine rows rely on at most two coefficients of ±1/2 or ±1 per row."""
+    from artipg.geometry.kernels import _sparse
+
+    _sparse(np.array([[[0.5, -1.0, 0.0, 2.0]]]))
+    for bad in ([[[0.5, 0.5, 0.5, 0.0]]], [[[0.25, 0.0, 0.0, 0.0]]]):
+        with pytest.raises(ValueError):
+            _sparse(np.array(bad))
+
+
+# ---------------------------------------------------------------- link poses and the normalisation
+
+def _plain_link_poses(obj, qpos=None):
+    """One link at a time, as the definition reads."""
+    q = obj.qpos_dict(qpos)
+    idx = obj.link_index
+    T = np.empty((len(obj.links), 4, 4))
+    T[0] = np.eye(4)
+    for i in range(1, len(obj.links)):
+        j = obj.links[i].joint
+        v = q.get(j.name, 0.0)
+        T[i] = (T[idx[j.parent]] @ j.origin) @ j.motion(v) if v else T[idx[j.parent]] @ j.origin
+    return T
+
+
+def _tree(normalize: bool):
+    """Links out of depth order (root, a, b under a, c, d under b, e under c), parts on all."""
+    rng = np.random.default_rng(5)
+    b = ObjectBuilder()
+    made = {"root": b.create_link("root")}
+    for name, parent in (("a", "root"), ("b", "a"), ("c", "root"), ("d", "b"), ("e", "c")):
+        lb = made[name] = b.create_link(name, made[parent])
+        lb.set_joint("revolute", rot_z(rng.random()) @ translation(*rng.random(3)), axis=rng.random(3) - 0.5,
+                     limits=(-1.0, 1.0))
+    for name, lb in made.items():
+        for k in range(2):
+            prim = cuboid(*(rng.random(3) + 0.1), rot_x(rng.random()) @ translation(*rng.random(3)))
+            lb.add(Part("body", "box", [prim]), rot_x(rng.random()) @ translation(*(rng.random(3) - 0.5)))
+    return b.build("test", "test", 0, normalize=normalize)
+
+
+def test_link_poses_a_level_at_a_time_match_one_link_at_a_time():
+    objs = [_tree(True)] + [artipg.generate(c, s) for c in CATS for s in range(2)]
+    for obj in objs:
+        lim = obj.limits()
+        for qpos in (None, lim[:, 1], 0.3 * lim[:, 0] + 0.7 * lim[:, 1]):
+            assert same(obj.link_poses(qpos), _plain_link_poses(obj, qpos))
+
+
+def test_normalisation_shifts_poses_and_frames_like_the_plain_loop():
+    obj, raw = _tree(True), _tree(False)
+    b = raw.bounds()
+    c = (b[0] + b[1]) / 2.0
+    S = translation(-c[0], -c[1], -b[0, 2])
+    root = raw.links[0]
+    for part in root.parts:
+        part.pose = S @ part.pose
+    for j in raw.joints:
+        if j.parent == root.name:
+            j.origin = S @ j.origin
+    table = raw.primitive_table
+    m = table.prim_link == 0
+    table.prim_T[m] = S @ table.prim_T[m]
+    assert all(same(p.pose, q.pose) for p, q in zip(obj.parts, raw.parts))
+    assert all(same(j.origin, k.origin) for j, k in zip(obj.joints, raw.joints))
+    assert same(obj.primitive_table.prim_T, table.prim_T)
+
+
+def test_compiled_paths_propagate_nan_like_numpy():
+    """A NaN parameter spoils the same cells and boxes on both paths (values compared
+    NaN-aware: NaN payloads are not part of the contract)."""
+    rng = np.random.default_rng(13)
+    for name in sorted(GEOMS):
+        for col in range(len(GEOMS[name].params)):
+            if name == "Prism" and col == 2:
+                continue  # a NaN side count makes numpy's patches raise
+            P = _random_params(name, 4, rng)
+            P[1, col] = np.nan
+            table = _table([(GEOMS[name], P)], rng)
+            got, want = table.families, table._plain_families()
+            assert [(f.name, f.start, f.stop) for f in got] == [(f.name, f.start, f.stop) for f in want]
+            for g, w in zip(got, want):
+                np.testing.assert_array_equal(g.params, w.params)
+                np.testing.assert_array_equal(g.area, w.area)
+            np.testing.assert_array_equal(table.local_boxes, table._plain_local_boxes())
+            plain = copy.copy(table)
+            plain.__dict__.pop("_local_centre_half", None)
+            plain._packed = None
+            L = np.eye(4)[None]
+            np.testing.assert_array_equal(table.bounds(L), plain.bounds(L))
