@@ -87,24 +87,20 @@ def draw_kernel(counts, code, Q, U, torus_local, perm, W, cell_prim, prim_part, 
         if f != _TORUS:
             u = U[2 * first[i] + r]
             v = U[2 * first[i] + size[i] + r]
-        if f == 0 or f == 1:  # rect, tri: o + u a + v b
-            if f == 1 and u + v > 1.0:
+        if f <= 2:  # rect, tri, sector: o + u a + v b
+            if f == 1 and u + v > 1.0:  # the far half of the unit square folds onto the triangle
                 u = 1.0 - u
                 v = 1.0 - v
+            elif f == 2:  # polar (rho, phi) -> (u, v) in the sector's plane
+                r0 = q[12]
+                r1 = q[13]
+                rho = math.sqrt(r0 * r0 + u * (r1 * r1 - r0 * r0))
+                phi = v * q[14]
+                u = math.cos(phi) * rho
+                v = math.sin(phi) * rho
             x = q[0] + u * q[3] + v * q[6]
             y = q[1] + u * q[4] + v * q[7]
             z = q[2] + u * q[5] + v * q[8]
-            nx, ny, nz = q[9], q[10], q[11]
-        elif f == 2:  # sector
-            r0 = q[12]
-            r1 = q[13]
-            rho = math.sqrt(r0 * r0 + u * (r1 * r1 - r0 * r0))
-            phi = v * q[14]
-            a = math.cos(phi) * rho
-            b = math.sin(phi) * rho
-            x = q[0] + a * q[3] + b * q[6]
-            y = q[1] + a * q[4] + b * q[7]
-            z = q[2] + a * q[5] + b * q[8]
             nx, ny, nz = q[9], q[10], q[11]
         elif f == 3:  # band
             r0 = q[0]
