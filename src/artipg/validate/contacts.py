@@ -130,6 +130,10 @@ def pair_distance(pieces: Pieces, a: np.ndarray, b: np.ndarray, Wa: np.ndarray, 
     if K == 0:
         return out
     margin = _per_row(margin, K)
+    if pieces.jit_table is not None:
+        from artipg.validate import jit_contacts
+
+        return jit_contacts.pair_distance(pieces, a, b, Wa, Wb, margin)
     box = pieces.is_box[a] & pieces.is_box[b]
     i = box.nonzero()[0]
     if len(i):

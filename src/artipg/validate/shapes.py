@@ -34,6 +34,7 @@ import numpy as np
 from artipg.geometry.box import Cuboid, RectRing
 from artipg.geometry.patches import sample_family
 from artipg.geometry.revolve import Frustum, Ring, Sphere, Torus
+from artipg.validate import compiled
 from artipg.validate.rowsdf import PREPARE, prepare_quad_profiles
 from artipg.validate.streams import UniformStream
 
@@ -145,6 +146,19 @@ class Pieces:
                 out[sel, 0], out[sel, 1] = q[:, 0] - q[:, 1], q[:, 0] + q[:, 1]
         return out
 
+    @cached_property
+    def jit_table(self):
+        """The SDF codes and parameter table of the pieces for the compiled kernels
+        (:func:`artipg.validate.jit_contacts.piece_table`), or None where a piece has no
+        compiled SDF (a mesh) or the kernels are off (:mod:`artipg.validate.compiled`)."""
+        if not compiled.ENABLED or any(g is None for g in self._kinds):
+            return None
+        from artipg.validate.jit_contacts import SDF_CODES, piece_table
+
+        if any(g not in SDF_CODES for g in self._kinds):
+            return None
+        return piece_table(self)
+
     @property
     def points_t(self) -> np.ndarray:
         """All surface samples drawn so far as coordinate rows (3, N), piece frames:
@@ -183,18 +197,29 @@ class Pieces:
                 streams = [self._stream(len(self._kinds) + int(r)) for r in rows]
                 p, owner = _sample_meshes([self.meshes[int(r)] for r in rows], rows, streams)
                 order = np.argsort(owner, kind="stable")
-                p, cnt = p[order], np.bincount(owner, minlength=self.n)[rows]
+                p, cnt = p[order].T, np.bincount(owner, minlength=self.n)[rows]
             else:
                 rows = (self._kind == k).nonzero()[0]
                 want = need[rows]
-                p, cnt = _sample_group(g, self.params[rows, :self._nparams[k]], UniformStream(self._seed, k),
-                                       None if want.all() else want)
-                rows, cnt = rows[want], cnt[want]
+                want = None if want.all() else want
+                P = self.params[rows, :self._nparams[k]]
+                got = None
+                if compiled.ENABLED:
+                    from artipg.validate.jit_samples import draw_group
+
+                    got = draw_group(g, P, self._seed, k, want)
+                if got is None:
+                    p, cnt = _sample_group(g, P, UniformStream(self._seed, k), want)
+                    p = p.T
+                else:
+                    p, cnt = got
+                if want is not None:
+                    rows, cnt = rows[want], cnt[want]
             self.start[rows] = self._size + cnt.cumsum() - cnt
             self.count[rows] = cnt
             self._drawn[rows] = True
-            self._chunks.append(np.ascontiguousarray(p.T))
-            self._size += len(p)
+            self._chunks.append(np.ascontiguousarray(p))  # (3, n)
+            self._size += p.shape[1]
 
     def _stream(self, key: int) -> np.random.Generator:
         """The sample stream ``key`` (a template index, or a mesh piece's) of this object."""
@@ -452,6 +477,7 @@ class _Layout(NamedTuple):
     start: list  # first patch index of each block
     one_per_comp: bool  # no component has two patches
     complete: bool  # every component has a patch
+    meta: np.ndarray  # the above as one int64 table (see artipg.validate.jit_samples)
 
 
 _LAYOUTS: dict = {}
@@ -467,10 +493,18 @@ def _layout(blocks, C: int) -> _Layout:
         patch = np.full(C, -1)
         patch[pcomp] = np.arange(len(pcomp))
         sizes = [len(b.comp) for b in blocks]
-        lay = _Layout(pcomp, patch, np.arange(len(blocks)).repeat(sizes), np.cumsum([0] + sizes[:-1]).tolist(),
-                      len(set(pcomp.tolist())) == len(pcomp), bool((patch >= 0).all()))
+        block = np.arange(len(blocks)).repeat(sizes)
+        one, complete = len(set(pcomp.tolist())) == len(pcomp), bool((patch >= 0).all())
+        meta = np.concatenate([[C, len(pcomp), len(blocks), one, complete], patch, pcomp, block,
+                               [_FAMILY_CODES[b.family] for b in blocks], [b.params.shape[1] for b in blocks],
+                               sizes]).astype(np.int64)
+        lay = _Layout(pcomp, patch, block, np.cumsum([0] + sizes[:-1]).tolist(), one, complete, meta)
         _LAYOUTS[key] = lay
     return lay
+
+
+#: Family codes of :attr:`_Layout.meta`, in :data:`artipg.geometry.patches.FAMILIES` order.
+_FAMILY_CODES = {"rect": 0, "tri": 1, "sector": 2, "band": 3, "zone": 4, "torus": 5}
 
 
 def _family(b, patch, row, rng) -> np.ndarray:

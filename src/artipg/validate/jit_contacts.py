@@ -1,0 +1,412 @@
+"""Compiled kernels of :mod:`artipg.validate.contacts`: the batched pair distance.
+
+:func:`pair_distance` gives the same signed separations as
+:func:`artipg.validate.contacts.pair_distance`, bit for bit: box-box pairs by the same
+separating-axis test and exact box distance, ball-ball pairs by their centres, other
+pairs by the same culled minimum over surface samples of the exact SDFs
+(:mod:`artipg.validate.rowsdf`), each written out one row (one point) at a time with
+the numpy code's operations in the numpy code's order. What numba cannot reproduce
+bit for bit stays numpy: the rigid transforms between pieces (a matrix product,
+which numpy hands to BLAS) and the sines and cosines of the SDF tables
+(:func:`piece_table`).
+
+This module imports numba: import it lazily (``import artipg`` stays light).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numba
+import numpy as np
+
+from artipg.geometry.box import Cuboid
+from artipg.geometry.prism import MAX_SIDES, Prism, TriPrism
+from artipg.geometry.revolve import Frustum, Ring, Sphere, Torus
+from artipg.validate.kinematics import rigid_inverse
+
+#: SDF codes of the templates the kernels evaluate (0: none of them: a mesh piece).
+SDF_CODES = {Cuboid: 1, Frustum: 2, Ring: 3, Sphere: 4, Torus: 5, Prism: 6, TriPrism: 7}
+_V = MAX_SIDES  # polygon vertices in the table
+#: Columns of :func:`piece_table`: the polygon (vertex count, x, y) of prisms and
+#: of the (ρ, z) profiles of frusta and rings, then a wedge's -sin(arc), cos(arc).
+_NS, _CS = 1 + 2 * _V, 2 + 2 * _V
+_RADIAL_CULL = 200
+
+
+def piece_table(pieces) -> tuple[np.ndarray, np.ndarray]:
+    """The SDF code (M,) int64 and parameter table (M, 3 + 2 MAX_SIDES) float64 of
+    the pieces: every value the row-wise SDFs of :mod:`artipg.validate.rowsdf` compute
+    from the parameters alone, by the same numpy expressions."""
+    M = pieces.n
+    code = np.array([SDF_CODES.get(g, 0) for g in pieces._kinds] + [0], dtype=np.int64)[
+        pieces._kind if M else np.zeros(0, dtype=np.int64)]
+    aux = np.zeros((M, 3 + 2 * _V))
+    P = pieces.params
+    for c in np.unique(code).tolist():
+        sel = (code == c).nonzero()[0]
+        p = P[sel]
+        if c in (2, 3):  # rowsdf._prepare_profile
+            if c == 2:
+                r0, r1, h = p[:, 0], p[:, 1], p[:, 2]
+                px = [-r0, r0, r1, -r1]
+            else:
+                ro, ri, h, tp = p[:, 0], p[:, 1], p[:, 2], p[:, 4]
+                px = [ri, ro, ro + tp, ri + tp]
+            zb, zt = -h / 2, h / 2
+            aux[sel, 0] = 4
+            for k in range(4):
+                aux[sel, 1 + k] = px[k]
+            aux[sel, 1 + _V], aux[sel, 2 + _V], aux[sel, 3 + _V], aux[sel, 4 + _V] = zb, zb, zt, zt
+        elif c == 6:  # rowsdf.prepare_prism
+            r, n = p[:, 0], p[:, 2]
+            k = np.minimum(np.arange(MAX_SIDES)[:, None], n[None, :] - 1)
+            a = np.pi / n + 2 * np.pi * k / n
+            aux[sel, 0] = _V
+            aux[sel, 1:1 + _V] = (r * np.cos(a)).T
+            aux[sel, 1 + _V:1 + 2 * _V] = (r * np.sin(a)).T
+        elif c == 7:  # rowsdf.prepare_tri_prism
+            w, t, a = p[:, 0], p[:, 1], p[:, 2]
+            aux[sel, 0] = 3
+            aux[sel, 1], aux[sel, 2], aux[sel, 3] = -w / 2, w / 2, a
+            aux[sel, 1 + _V], aux[sel, 2 + _V], aux[sel, 3 + _V] = 0.0, 0.0, t
+        if c in (3, 5):  # rowsdf.prepare_wedge
+            arc = p[:, 3] if c == 3 else p[:, 2]
+            aux[sel, _NS], aux[sel, _CS] = -np.sin(arc), np.cos(arc)
+    return code, aux
+
+
+def pair_distance(pieces, a, b, Wa, Wb, margin: np.ndarray) -> np.ndarray:
+    """:func:`artipg.validate.contacts.pair_distance` (``margin`` (K,)), compiled; the
+    pieces must all have SDF codes (see :attr:`artipg.validate.shapes.Pieces.jit_table`)."""
+    K = len(a)
+    code, aux = pieces.jit_table
+    box = pieces.is_box[a] & pieces.is_box[b]
+    ball = pieces.is_ball[a] & pieces.is_ball[b]
+    i = (~box & ~ball).nonzero()[0]
+    if len(i):
+        rel = np.concatenate([rigid_inverse(Wb[i]) @ Wa[i], rigid_inverse(Wa[i]) @ Wb[i]])
+        src, tgt = np.concatenate([a[i], b[i]]), np.concatenate([b[i], a[i]])
+        m = margin[i]
+        keep = _cull(src, tgt, rel, pieces.center, pieces.half, m)
+        pieces.require(src[keep])
+        pts = pieces.points_t
+    else:
+        rel, src, tgt, keep, pts = _NO_REL, _NO_INT, _NO_INT, _NO_BOOL, _NO_PTS
+    return _pair_distance(a, b, Wa, Wb, margin, box, ball, i, src, tgt, rel, keep, pieces.params, code, aux,
+                          pieces.center, pieces.half, pieces.radial, pts, pieces.start, pieces.count)
+
+
+_NO_REL = np.zeros((0, 4, 4))
+_NO_INT = np.zeros(0, dtype=np.int64)
+_NO_BOOL = np.zeros(0, dtype=np.bool_)
+_NO_PTS = np.zeros((3, 0))
+
+
+@numba.njit(cache=True)
+def _cull(src, tgt, rel, center, half, m):
+    """Jobs of :func:`artipg.validate.contacts.evaluate` whose source box, posed in the
+    target frame, comes within the margin of the target box on every axis."""
+    n = len(src)
+    k = len(m)
+    keep = np.empty(n, dtype=np.bool_)
+    for j in range(n):
+        s, t = src[j], tgt[j]
+        mj = m[j % k]
+        ok = True
+        for r in range(3):
+            c = rel[j, r, 0] * center[s, 0] + rel[j, r, 1] * center[s, 1] + rel[j, r, 2] * center[s, 2] + rel[j, r, 3]
+            e = abs(rel[j, r, 0]) * half[s, 0] + abs(rel[j, r, 1]) * half[s, 1] + abs(rel[j, r, 2]) * half[s, 2]
+            if not (abs(c - center[t, r]) - e - half[t, r] <= mj):
+                ok = False
+        keep[j] = ok
+    return keep
+
+
+@numba.njit(cache=True)
+def _pair_distance(a, b, Wa, Wb, margin, box, ball, other, src, tgt, rel, keep, params, code, aux, center, half,
+                   radial, pts, start, count):
+    K = len(a)
+    out = np.empty(K)
+    for r in range(K):
+        if box[r]:
+            out[r] = _box_box(params[a[r], 0] / 2, params[a[r], 1] / 2, params[a[r], 2] / 2, params[b[r], 0] / 2,
+                              params[b[r], 1] / 2, params[b[r], 2] / 2, Wa[r], Wb[r], margin[r])
+        elif ball[r]:
+            g0 = Wa[r, 0, 3] - Wb[r, 0, 3]
+            g1 = Wa[r, 1, 3] - Wb[r, 1, 3]
+            g2 = Wa[r, 2, 3] - Wb[r, 2, 3]
+            out[r] = math.sqrt(0.0 + g0 * g0 + g1 * g1 + g2 * g2) - params[a[r], 0] - params[b[r], 0]
+    n = len(other)
+    if n == 0:
+        return out
+    # evaluate(): the samples of each kept job near the target's box, then (with many
+    # of them) near its radial extent
+    near = 0
+    for j in range(2 * n):
+        if keep[j]:
+            s, t = src[j], tgt[j]
+            mj = margin[other[j % n]]
+            for p in range(start[s], start[s] + count[s]):
+                if _near_box(rel[j], pts[0, p], pts[1, p], pts[2, p], center[t], half[t], mj):
+                    near += 1
+    radial_cull = near > _RADIAL_CULL
+    d = np.full(2 * n, np.inf)
+    for j in range(2 * n):
+        if not keep[j]:
+            continue
+        s, t = src[j], tgt[j]
+        mj = margin[other[j % n]]
+        R = rel[j]
+        best = np.inf
+        for p in range(start[s], start[s] + count[s]):
+            x, y, z = pts[0, p], pts[1, p], pts[2, p]
+            if not _near_box(R, x, y, z, center[t], half[t], mj):
+                continue
+            y0 = R[0, 0] * x + R[0, 1] * y + R[0, 2] * z + R[0, 3]
+            y1 = R[1, 0] * x + R[1, 1] * y + R[1, 2] * z + R[1, 3]
+            y2 = R[2, 0] * x + R[2, 1] * y + R[2, 2] * z + R[2, 3]
+            if radial_cull:
+                mn = mj + 1e-9
+                rho = math.hypot(y0, y1)
+                if not (rho <= radial[t, 1] + mn and rho >= radial[t, 0] - mn):
+                    continue
+            v = sdf(code[t], params[t], aux[t], y0, y1, y2)
+            if v < best:
+                best = v
+        d[j] = best
+    for j in range(n):
+        out[other[j]] = _min(d[j], d[n + j])
+    return out
+
+
+@numba.njit(cache=True, inline="always")
+def _near_box(R, x, y, z, ct, ht, m):
+    """The point (x, y, z), moved by ``R`` (4, 4), lies within ``m`` of the box
+    ``ct``, ``ht`` on every axis (:func:`artipg.validate.contacts.evaluate`)."""
+    for i in range(3):
+        v = R[i, 0] * x + R[i, 1] * y + R[i, 2] * z + R[i, 3]
+        if not (abs(v - ct[i]) - ht[i] <= m):
+            return False
+    return True
+
+
+@numba.njit(cache=True, inline="always")
+def _max(a, b):
+    """``np.maximum`` of two numbers (not NaN)."""
+    return a if a > b else b
+
+
+@numba.njit(cache=True, inline="always")
+def _min(a, b):
+    """``np.minimum`` of two numbers (not NaN)."""
+    return a if a < b else b
+
+
+@numba.njit(cache=True, inline="always")
+def _clip01(x):
+    """``np.clip(x, 0.0, 1.0)``."""
+    return 0.0 if x < 0.0 else (1.0 if x > 1.0 else x)
+
+
+# ------------------------------------------------------------------ signed distances
+
+@numba.njit(cache=True)
+def sdf(code, p, aux, x, y, z):
+    """Signed distance of the point (x, y, z), piece frame, to a piece of SDF ``code``
+    with parameters ``p`` and table row ``aux`` (:func:`piece_table`): the row-wise
+    SDFs of :mod:`artipg.validate.rowsdf`, one point."""
+    if code == 1:
+        return _cuboid(p[0] * 0.5, p[1] * 0.5, p[2] * 0.5, x, y, z)
+    if code == 2 or code == 3:
+        d = _polygon(math.hypot(x, y), z, aux)
+        if code == 3:
+            d = _max(d, _wedge(x, y, p[3], aux))
+        return d
+    if code == 4:
+        return _max(_max(math.sqrt(x * x + y * y + z * z) - p[0], p[1] - z), z - p[2])
+    if code == 5:
+        return _max(math.hypot(math.hypot(x, y) - p[0], z) - p[1], _wedge(x, y, p[2], aux))
+    if code == 6:
+        return _max(_polygon(x, y, aux), abs(z) - p[1] / 2)
+    return _max(_polygon(x, y, aux), abs(z) - p[3] / 2)  # tri prism
+
+
+@numba.njit(cache=True, inline="always")
+def _cuboid(sx, sy, sz, x, y, z):
+    qx, qy, qz = abs(x) - sx, abs(y) - sy, abs(z) - sz
+    ox, oy, oz = _max(qx, 0.0), _max(qy, 0.0), _max(qz, 0.0)
+    return math.sqrt(ox * ox + oy * oy + oz * oz) + _min(_max(_max(qx, qy), qz), 0.0)
+
+
+@numba.njit(cache=True)
+def _polygon(qx, qy, aux):
+    """:func:`artipg.validate.rowsdf.prepare_polygon` at one point: the polygon of
+    ``aux[0]`` vertices ``aux[1:]`` (x) and ``aux[1 + MAX_SIDES:]`` (y)."""
+    V = int(aux[0])
+    best = np.inf
+    crossings = 0
+    for i in range(V):
+        nx = i + 1 if i + 1 < V else 0
+        px, py = aux[1 + i], aux[1 + _V + i]
+        bx, by = aux[1 + nx], aux[1 + _V + nx]
+        ex, ey = bx - px, by - py
+        ee = _max(ex * ex + ey * ey, 1e-30)
+        ey_safe = ey if abs(ey) > 1e-30 else 1e-30
+        wx, wy = qx - px, qy - py
+        t = _min(_max((wx * ex + wy * ey) / ee, 0.0), 1.0)
+        dx, dy = wx - t * ex, wy - t * ey
+        d2 = dx * dx + dy * dy
+        if d2 < best:
+            best = d2
+        if (py > qy) != (by > qy) and qx < px + (qy - py) * ex / ey_safe:
+            crossings += 1
+    dist = math.sqrt(best)
+    return -dist if crossings % 2 == 1 else dist
+
+
+@numba.njit(cache=True, inline="always")
+def _wedge(x, y, arc, aux):
+    """:func:`artipg.validate.rowsdf.prepare_wedge` at one point."""
+    if arc >= 2.0 * np.pi - 1e-9:
+        return -np.inf
+    d0 = -y
+    d1 = aux[_NS] * x + aux[_CS] * y
+    return _max(d0, d1) if arc <= np.pi else _min(d0, d1)
+
+
+# ------------------------------------------------------------------ boxes
+
+@numba.njit(cache=True)
+def _box_box(ha0, ha1, ha2, hb0, hb1, hb2, Wa, Wb, margin):
+    """:func:`artipg.validate.contacts.box_box` of one pair."""
+    aligned = True
+    for i in range(3):
+        for j in range(3):
+            va, vb = Wa[i, j], Wb[i, j]
+            if not ((va == 0.0 or abs(va) == 1.0) and (vb == 0.0 or abs(vb) == 1.0)):
+                aligned = False
+    edge = margin if math.isfinite(margin) else -1.0
+    if aligned:  # contacts._aligned_box_box
+        out = -np.inf
+        for i in range(3):
+            ea = abs(Wa[i, 0]) * ha0 + abs(Wa[i, 1]) * ha1 + abs(Wa[i, 2]) * ha2
+            eb = abs(Wb[i, 0]) * hb0 + abs(Wb[i, 1]) * hb1 + abs(Wb[i, 2]) * hb2
+            v = abs(Wa[i, 3] - Wb[i, 3]) - (ea + eb)
+            if v > out:
+                out = v
+        if out > 0 and out <= margin:
+            out = _box_distance(ha0, ha1, ha2, hb0, hb1, hb2, Wa, Wb, edge)
+        return out
+    # contacts._sat_box_box: everything in a's frame, R = A^T B, T = A^T t
+    R = np.empty((3, 3))
+    T = np.empty(3)
+    t0, t1, t2 = Wb[0, 3] - Wa[0, 3], Wb[1, 3] - Wa[1, 3], Wb[2, 3] - Wa[2, 3]
+    for i in range(3):
+        for j in range(3):
+            R[i, j] = Wa[0, i] * Wb[0, j] + Wa[1, i] * Wb[1, j] + Wa[2, i] * Wb[2, j]
+        T[i] = Wa[0, i] * t0 + Wa[1, i] * t1 + Wa[2, i] * t2
+    depth = np.inf
+    for k in range(15):
+        # the axis (unnormalised, a's frame): a's axes, b's, a_i x b_j
+        if k < 3:
+            ax, ay, az = (1.0 if k == 0 else 0.0), (1.0 if k == 1 else 0.0), (1.0 if k == 2 else 0.0)
+        elif k < 6:
+            ax, ay, az = R[0, k - 3], R[1, k - 3], R[2, k - 3]
+        elif k < 9:
+            ax, ay, az = 0.0, -R[2, k - 6], R[1, k - 6]
+        elif k < 12:
+            ax, ay, az = R[2, k - 9], 0.0, -R[0, k - 9]
+        else:
+            ax, ay, az = -R[1, k - 12], R[0, k - 12], 0.0
+        n = math.sqrt(ax * ax + ay * ay + az * az)
+        if not n > 1e-9:
+            continue  # inf
+        ra = abs(ax) * ha0 + abs(ay) * ha1 + abs(az) * ha2
+        rb = (abs(ax * R[0, 0] + ay * R[1, 0] + az * R[2, 0]) * hb0
+              + abs(ax * R[0, 1] + ay * R[1, 1] + az * R[2, 1]) * hb1
+              + abs(ax * R[0, 2] + ay * R[1, 2] + az * R[2, 2]) * hb2)
+        dist = abs(ax * T[0] + ay * T[1] + az * T[2])
+        over = (ra + rb - dist) / n
+        if over < depth:
+            depth = over
+    out = -depth
+    if depth < 0 and -depth <= margin:
+        out = _box_distance(ha0, ha1, ha2, hb0, hb1, hb2, Wa, Wb, edge)
+    return out
+
+
+#: Corners of the unit box (as contacts._CORNERS) and its 12 edges.
+_CORNERS = np.array([[a, b, c] for a in (-0.5, 0.5) for b in (-0.5, 0.5) for c in (-0.5, 0.5)])
+_EDGES = np.array([(i, j) for i in range(8) for j in range(i + 1, 8)
+                   if np.count_nonzero(_CORNERS[i] != _CORNERS[j]) == 1], dtype=np.int64)
+
+
+@numba.njit(cache=True)
+def _box_distance(ha0, ha1, ha2, hb0, hb1, hb2, Wa, Wb, edge_margin):
+    """:func:`artipg.validate.contacts.box_distance` of one pair (vertex-face, then
+    edge-edge where the vertex bound exceeds ``edge_margin``)."""
+    d0, d1, d2 = Wa[0, 3] - Wb[0, 3], Wa[1, 3] - Wb[1, 3], Wa[2, 3] - Wb[2, 3]
+    R = np.empty((3, 3))  # a's frame in b's: R = Rb^T Ra, t = Rb^T (ta - tb)
+    t = np.empty(3)
+    u = np.empty(3)
+    for i in range(3):
+        for j in range(3):
+            R[i, j] = Wb[0, i] * Wa[0, j] + Wb[1, i] * Wa[1, j] + Wb[2, i] * Wa[2, j]
+        t[i] = Wb[0, i] * d0 + Wb[1, i] * d1 + Wb[2, i] * d2
+    for i in range(3):
+        u[i] = -(R[0, i] * t[0] + R[1, i] * t[1] + R[2, i] * t[2])
+    va_b = np.empty((8, 3))  # a's corners in b's frame
+    vb = np.empty((8, 3))  # b's corners in b's frame
+    best = np.inf
+    sa0, sa1, sa2 = (2 * ha0) * 0.5, (2 * ha1) * 0.5, (2 * ha2) * 0.5
+    sb0, sb1, sb2 = (2 * hb0) * 0.5, (2 * hb1) * 0.5, (2 * hb2) * 0.5
+    for v in range(8):
+        a0, a1, a2 = _CORNERS[v, 0] * 2 * ha0, _CORNERS[v, 1] * 2 * ha1, _CORNERS[v, 2] * 2 * ha2
+        b0, b1, b2 = _CORNERS[v, 0] * 2 * hb0, _CORNERS[v, 1] * 2 * hb1, _CORNERS[v, 2] * 2 * hb2
+        vb[v, 0], vb[v, 1], vb[v, 2] = b0, b1, b2
+        for i in range(3):
+            va_b[v, i] = R[i, 0] * a0 + R[i, 1] * a1 + R[i, 2] * a2 + t[i]
+        x = _cuboid(sb0, sb1, sb2, va_b[v, 0], va_b[v, 1], va_b[v, 2])
+        if x < best:
+            best = x
+        w0 = R[0, 0] * b0 + R[1, 0] * b1 + R[2, 0] * b2 + u[0]
+        w1 = R[0, 1] * b0 + R[1, 1] * b1 + R[2, 1] * b2 + u[1]
+        w2 = R[0, 2] * b0 + R[1, 2] * b1 + R[2, 2] * b2 + u[2]
+        x = _cuboid(sa0, sa1, sa2, w0, w1, w2)
+        if x < best:
+            best = x
+    if not best > edge_margin:
+        return best
+    for e in range(12):
+        for f in range(12):
+            x = _segment_distance(va_b[_EDGES[e, 0]], va_b[_EDGES[e, 1]], vb[_EDGES[f, 0]], vb[_EDGES[f, 1]])
+            if x < best:
+                best = x
+    return best
+
+
+@numba.njit(cache=True)
+def _segment_distance(p0, p1, q0, q1):
+    """:func:`artipg.validate.contacts.segment_distance` of one pair of segments."""
+    a = b = c = e = f = 0.0
+    for k in range(3):
+        d1, d2, r = p1[k] - p0[k], q1[k] - q0[k], p0[k] - q0[k]
+        a += d1 * d1
+        e += d2 * d2
+        b += d1 * d2
+        c += d1 * r
+        f += d2 * r
+    den = a * e - b * b
+    s = _clip01((b * f - c * e) / den) if den > 1e-18 else 0.0
+    t = (b * s + f) / _max(e, 1e-18)
+    if t < 0:
+        s = _clip01(-c / _max(a, 1e-18))
+    elif t > 1:
+        s = _clip01((b - c) / _max(a, 1e-18))
+    t = _clip01(t)
+    out = 0.0
+    for k in range(3):
+        v = p0[k] + s * (p1[k] - p0[k]) - q0[k] - t * (q1[k] - q0[k])
+        out += v * v
+    return math.sqrt(out)
