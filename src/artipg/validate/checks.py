@@ -23,6 +23,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from artipg.validate import compiled
 from artipg.validate.contacts import (close_pairs, deepest_point, overlapping, pair_distance, refine_distance,
                                       world_boxes)
 from artipg.validate.kinematics import Kinematics, rigid_inverse, rotations
@@ -134,11 +135,20 @@ def _sweep_pairs(kin, pieces, rest, W0, c0, h0, tol) -> dict:
         return out
     axes = kin.world_axes(rest)
     subtree = kin.descendants[movable][:, pieces.link]  # (J, M): pieces each joint moves
+    scene_joint, scene_q = kin.sweep_table(tol.sweep_poses)
+    out["joint"], out["q"] = scene_joint, scene_q
+    if compiled.ENABLED:
+        from artipg.validate import jit_pairs
+
+        moving = subtree & ~jit_pairs.turns_in_place(axes[0], axes[1], kin.slides, pieces.symmetric, W0)
+        q = np.where(kin.slides[scene_joint], 0.0, scene_q)
+        a, b, Wa, Wb, scene = jit_pairs.sweep_pairs(moving, subtree, scene_joint, scene_q, np.cos(q), np.sin(q),
+                                                    kin.slides, axes[0], axes[1], W0, c0, h0, pieces.half, -_OVERLAP)
+        out.update(a=a, b=b, Wa=Wa, Wb=Wb, scene=scene)
+        return out
     # a solid of revolution turning about its own axis occupies the same space at
     # every joint value: its rest result stands for the whole sweep
     moving = subtree & ~_turns_in_place(kin, pieces, axes, W0)
-    scene_joint, scene_q = kin.sweep_table(tol.sweep_poses)
-    out["joint"], out["q"] = scene_joint, scene_q
     uj, up = np.nonzero(moving)  # (joint, moving piece) pairs
     if not len(uj):
         return out

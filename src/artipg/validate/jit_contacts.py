@@ -410,3 +410,193 @@ def _segment_distance(p0, p1, q0, q1):
         v = p0[k] + s * (p1[k] - p0[k]) - q0[k] - t * (q1[k] - q0[k])
         out += v * v
     return math.sqrt(out)
+
+
+# ------------------------------------------------------------------ refinement
+
+def refine_distance(pieces, a, b, Wa, Wb, starts: int, iters: int, stop_below: float) -> np.ndarray:
+    """:func:`artipg.validate.contacts.refine_distance`, compiled (the pieces must all
+    have SDF codes, and :func:`einsum_orders_match`)."""
+    code, aux = pieces.jit_table
+    pieces.require(np.concatenate([a, b]))
+    return _refine(a, b, np.ascontiguousarray(Wa), np.ascontiguousarray(Wb), starts, iters, float(stop_below),
+                   pieces.params, code, aux, pieces.points_t, pieces.start, pieces.count, _H, _ON_SURFACE, _OFFS)
+
+
+# the constants of artipg.validate.contacts' refinement (the same expressions)
+_H = 1e-6
+_ON_SURFACE = 1e-5
+_OFFS = np.concatenate([np.eye(3), -np.eye(3)]) * _H
+
+
+@numba.njit(cache=True, inline="always")
+def _apply(W, x0, x1, x2, i):
+    """Row i of ``np.einsum("nij,nj->ni", W[:, :3, :3], x)`` for one row, in the order
+    numpy sums it (terms 0 and 2 first; see :func:`einsum_orders_match`)."""
+    return W[i, 0] * x0 + W[i, 2] * x2 + W[i, 1] * x1
+
+
+@numba.njit(cache=True, inline="always")
+def _apply_t(W, x0, x1, x2, i):
+    """Row i of ``np.einsum("nji,nj->ni", W[:, :3, :3], x)`` for one row."""
+    return W[0, i] * x0 + W[1, i] * x1 + W[2, i] * x2
+
+
+@numba.njit(cache=True)
+def _einsum_probe(W, x):
+    """Both einsum contractions of :func:`einsum_orders_match` written out."""
+    n = len(x)
+    out = np.empty((2, n, 3))
+    for k in range(n):
+        for i in range(3):
+            out[0, k, i] = _apply(W[k], x[k, 0], x[k, 1], x[k, 2], i)
+            out[1, k, i] = _apply_t(W[k], x[k, 0], x[k, 1], x[k, 2], i)
+    return out
+
+
+_EINSUM_OK: list = []
+
+
+def einsum_orders_match() -> bool:
+    """Whether numpy's ``einsum`` sums the 3-term products of the refinement
+    (``"nij,nj->ni"`` and ``"nji,nj->ni"`` on (n, 4, 4) frames) in the order the
+    kernels do on this machine (it depends on numpy's SIMD loops). Probed once."""
+    if not _EINSUM_OK:
+        rng = np.random.default_rng(7)
+        W = rng.normal(size=(512, 4, 4))
+        x = rng.normal(size=(512, 3)) * np.array([1.0, 1e3, 1e-3])
+        got = _einsum_probe(W, x)
+        _EINSUM_OK.append(bool(np.array_equal(got[0], np.einsum("nij,nj->ni", W[:, :3, :3], x))
+                               and np.array_equal(got[1], np.einsum("nji,nj->ni", W[:, :3, :3], x))))
+    return _EINSUM_OK[0]
+
+
+@numba.njit(cache=True)
+def _refine(a, b, Wa, Wb, starts, iters, stop_below, params, code, aux, pts, start, count, H, on_surface, offs):
+    K = len(a)
+    J = 2 * K
+    # the samples of each job's source nearest its target (by their SDF; ties: first)
+    first = np.zeros(J + 1, dtype=np.int64)
+    for j in range(J):
+        s = a[j] if j < K else b[j - K]
+        first[j + 1] = first[j] + min(starts, count[s])
+    n = first[J]
+    P = np.empty((n, 3))  # the rows' points, world frame
+    job = np.empty(n, dtype=np.int64)
+    best = np.full(J, np.inf)
+    for j in range(J):
+        s, t = (a[j], b[j]) if j < K else (b[j - K], a[j - K])
+        Ws, Wt = (Wa[j], Wb[j]) if j < K else (Wb[j - K], Wa[j - K])
+        c = count[s]
+        X = np.empty((c, 3))
+        d = np.empty(c)
+        for k in range(c):
+            x0, x1, x2 = pts[0, start[s] + k], pts[1, start[s] + k], pts[2, start[s] + k]
+            for i in range(3):
+                X[k, i] = _apply(Ws, x0, x1, x2, i) + Ws[i, 3]
+            y0, y1, y2 = X[k, 0] - Wt[0, 3], X[k, 1] - Wt[1, 3], X[k, 2] - Wt[2, 3]
+            d[k] = sdf(code[t], params[t], aux[t], _apply_t(Wt, y0, y1, y2, 0), _apply_t(Wt, y0, y1, y2, 1),
+                       _apply_t(Wt, y0, y1, y2, 2))
+        order = np.argsort(d, kind="mergesort")  # stable: ties keep the sample order
+        for r in range(first[j + 1] - first[j]):
+            k = order[r]
+            P[first[j] + r] = X[k]
+            job[first[j] + r] = j
+            if d[k] < best[j]:
+                best[j] = d[k]
+    # alternate projections; every point reached on the source bounds the distance
+    Lt = np.empty((n, 3))
+    dt = np.empty((n, 7))
+    off = np.empty(n)
+    Q = np.empty((n, 3))
+    Ls = np.empty((n, 3))
+    ds = np.empty((n, 7))
+    _target_stencil(P, job, K, a, b, Wa, Wb, params, code, aux, offs, Lt, dt, off)
+    for _ in range(iters):
+        _step(Lt, dt, job, K, Wb, Wa, H, Q)  # onto the target
+        _source_stencil(Q, job, K, a, b, Wa, Wb, params, code, aux, offs, Ls, ds)
+        _step(Ls, ds, job, K, Wa, Wb, H, P)  # back onto the source
+        _target_stencil(P, job, K, a, b, Wa, Wb, params, code, aux, offs, Lt, dt, off)
+        before = np.empty(K)
+        for k in range(K):
+            before[k] = _min(best[k], best[K + k])
+        for r in range(n):
+            o = abs(off[r])
+            if o <= on_surface:
+                v = dt[r, 0] + o
+                if v < best[job[r]]:
+                    best[job[r]] = v
+        done = True
+        gain = -np.inf
+        nan = False
+        for k in range(K):
+            now = _min(best[k], best[K + k])
+            if not now <= stop_below:
+                done = False
+            g = before[k] - now
+            if g != g:
+                nan = True
+            elif g > gain:
+                gain = g
+        if done or (not nan and gain < 1e-6):
+            break
+    out = np.empty(K)
+    for k in range(K):
+        out[k] = _min(best[k], best[K + k])
+    return out
+
+
+@numba.njit(cache=True)
+def _target_stencil(X, job, K, a, b, Wa, Wb, params, code, aux, offs, L, d, off):
+    """contacts._target_stencil: the targets' SDF at world points ``X`` and their six
+    neighbours (``d`` (n, 7), local points ``L``), the sources' SDF (``off``)."""
+    for r in range(len(X)):
+        j = job[r]
+        s, t = (a[j], b[j]) if j < K else (b[j - K], a[j - K])
+        Ws, Wt = (Wa[j], Wb[j]) if j < K else (Wb[j - K], Wa[j - K])
+        y0, y1, y2 = X[r, 0] - Wt[0, 3], X[r, 1] - Wt[1, 3], X[r, 2] - Wt[2, 3]
+        for i in range(3):
+            L[r, i] = _apply_t(Wt, y0, y1, y2, i)
+        _stencil_row(code[t], params[t], aux[t], L[r], offs, d[r])
+        y0, y1, y2 = X[r, 0] - Ws[0, 3], X[r, 1] - Ws[1, 3], X[r, 2] - Ws[2, 3]
+        off[r] = sdf(code[s], params[s], aux[s], _apply_t(Ws, y0, y1, y2, 0), _apply_t(Ws, y0, y1, y2, 1),
+                     _apply_t(Ws, y0, y1, y2, 2))
+
+
+@numba.njit(cache=True)
+def _source_stencil(X, job, K, a, b, Wa, Wb, params, code, aux, offs, L, d):
+    """contacts._stencil of the sources at world points ``X``."""
+    for r in range(len(X)):
+        j = job[r]
+        s = a[j] if j < K else b[j - K]
+        Ws = Wa[j] if j < K else Wb[j - K]
+        y0, y1, y2 = X[r, 0] - Ws[0, 3], X[r, 1] - Ws[1, 3], X[r, 2] - Ws[2, 3]
+        for i in range(3):
+            L[r, i] = _apply_t(Ws, y0, y1, y2, i)
+        _stencil_row(code[s], params[s], aux[s], L[r], offs, d[r])
+
+
+@numba.njit(cache=True, inline="always")
+def _stencil_row(code, p, aux, L, offs, d):
+    d[0] = sdf(code, p, aux, L[0], L[1], L[2])
+    for o in range(6):
+        d[1 + o] = sdf(code, p, aux, L[0] + offs[o, 0], L[1] + offs[o, 1], L[2] + offs[o, 2])
+
+
+@numba.njit(cache=True)
+def _step(L, d, job, K, W_first, W_second, H, out):
+    """contacts._step: one Newton step from each row's stencil onto its piece's
+    surface, world frame (the piece of job j is posed by ``W_first[j]`` for j < K,
+    else by ``W_second[j - K]``)."""
+    for r in range(len(L)):
+        j = job[r]
+        W = W_first[j] if j < K else W_second[j - K]
+        g0 = (d[r, 1] - d[r, 4]) / (2 * H)
+        g1 = (d[r, 2] - d[r, 5]) / (2 * H)
+        g2 = (d[r, 3] - d[r, 6]) / (2 * H)
+        norm = _max(math.sqrt(g0 * g0 + g1 * g1 + g2 * g2), 1e-12)
+        g0, g1, g2 = g0 / norm, g1 / norm, g2 / norm
+        d0 = d[r, 0]
+        v0, v1, v2 = L[r, 0] - d0 * g0, L[r, 1] - d0 * g1, L[r, 2] - d0 * g2
+        for i in range(3):
+            out[r, i] = _apply(W, v0, v1, v2, i) + W[i, 3]
