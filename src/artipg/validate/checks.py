@@ -24,7 +24,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from artipg.validate import compiled
-from artipg.validate.contacts import (close_pairs, deepest_point, overlapping, pair_distance, refine_distance,
+from artipg.validate.contacts import (_DENSE, close_pairs, deepest_point, overlapping, pair_distance, refine_distance,
                                       world_boxes)
 from artipg.validate.kinematics import Kinematics, rigid_inverse, rotations
 from artipg.validate.report import CheckResult, Issue
@@ -76,6 +76,40 @@ def run_checks(kin: Kinematics, pieces: Pieces, tol: Tolerances = Tolerances()) 
     dict
         ``{"penetration": CheckResult, "floating": ..., "joint_sweep": ...}``.
     """
+    if compiled.ENABLED and pieces.n <= _DENSE and _kernels_match():
+        from artipg.validate.jit_scenes import scenes as compiled_scenes
+
+        W0, c0, h0, scenes = compiled_scenes(kin, pieces, tol, _OVERLAP)
+    else:
+        W0, c0, h0, scenes = _scenes(kin, pieces, tol)
+    rest_s = scenes[0]
+    # curved pieces whose samples say "apart" while their boxes say "maybe touching"
+    # (a ball on a plane): refine the distance before judging contact
+    ra, rb, rd = rest_s["a"], rest_s["b"], rest_s["d"]
+    amb = (~(pieces.is_box[ra] & pieces.is_box[rb]) & (rd > tol.floating)).nonzero()[0]
+    if len(amb):
+        ia, ib = ra[amb], rb[amb]
+        lb = np.sqrt((np.maximum(np.abs(c0[ia] - c0[ib]) - h0[ia] - h0[ib], 0.0) ** 2).sum(axis=1))
+        amb = amb[lb <= tol.floating]
+    if len(amb):
+        rd[amb] = np.minimum(rd[amb], refine_distance(pieces, ra[amb], rb[amb], W0[ra[amb]], W0[rb[amb]],
+                                                      iters=3, stop_below=tol.floating))
+    return {
+        "penetration": _penetration(kin, pieces, rest_s, tol),
+        "floating": _floating(kin, pieces, W0, rest_s, tol),
+        "joint_sweep": _sweep_result(kin, pieces, scenes[1], scenes[2:], tol),
+    }
+
+
+def _kernels_match() -> bool:
+    from artipg.validate.jit_base import kernels_match
+
+    return kernels_match()
+
+
+def _scenes(kin, pieces, tol):
+    """The rest, sweep and open scenes with their distances ``"d"``: ``(W0, c0, h0,
+    [rest, sweep, open...])`` (W0: piece frames at rest, c0, h0: their world boxes)."""
     rest = kin.poses()
     W0 = rest[pieces.link] @ pieces.T
     c0, h0 = world_boxes(pieces, W0)
@@ -95,23 +129,7 @@ def run_checks(kin: Kinematics, pieces: Pieces, tol: Tolerances = Tolerances()) 
         s["d"] = d[k:k + n]
         s["Wa"], s["Wb"] = Wa[k:k + n], Wb[k:k + n]
         k += n
-    rest_s = scenes[0]
-    # curved pieces whose samples say "apart" while their boxes say "maybe touching"
-    # (a ball on a plane): refine the distance before judging contact
-    ra, rb, rd = rest_s["a"], rest_s["b"], rest_s["d"]
-    amb = (~(pieces.is_box[ra] & pieces.is_box[rb]) & (rd > tol.floating)).nonzero()[0]
-    if len(amb):
-        ia, ib = ra[amb], rb[amb]
-        lb = np.sqrt((np.maximum(np.abs(c0[ia] - c0[ib]) - h0[ia] - h0[ib], 0.0) ** 2).sum(axis=1))
-        amb = amb[lb <= tol.floating]
-    if len(amb):
-        rd[amb] = np.minimum(rd[amb], refine_distance(pieces, ra[amb], rb[amb], W0[ra[amb]], W0[rb[amb]],
-                                                      iters=3, stop_below=tol.floating))
-    return {
-        "penetration": _penetration(kin, pieces, rest_s, tol),
-        "floating": _floating(kin, pieces, W0, rest_s, tol),
-        "joint_sweep": _sweep_result(kin, pieces, scenes[1], scenes[2:], tol),
-    }
+    return W0, c0, h0, scenes
 
 
 # -------------------------------------------------------------------- pair building
@@ -137,15 +155,6 @@ def _sweep_pairs(kin, pieces, rest, W0, c0, h0, tol) -> dict:
     subtree = kin.descendants[movable][:, pieces.link]  # (J, M): pieces each joint moves
     scene_joint, scene_q = kin.sweep_table(tol.sweep_poses)
     out["joint"], out["q"] = scene_joint, scene_q
-    if compiled.ENABLED:
-        from artipg.validate import jit_pairs
-
-        moving = subtree & ~jit_pairs.turns_in_place(axes[0], axes[1], kin.slides, pieces.symmetric, W0)
-        q = np.where(kin.slides[scene_joint], 0.0, scene_q)
-        a, b, Wa, Wb, scene = jit_pairs.sweep_pairs(moving, subtree, scene_joint, scene_q, np.cos(q), np.sin(q),
-                                                    kin.slides, axes[0], axes[1], W0, c0, h0, pieces.half, -_OVERLAP)
-        out.update(a=a, b=b, Wa=Wa, Wb=Wb, scene=scene)
-        return out
     # a solid of revolution turning about its own axis occupies the same space at
     # every joint value: its rest result stands for the whole sweep
     moving = subtree & ~_turns_in_place(kin, pieces, axes, W0)

@@ -417,9 +417,9 @@ def refine_distance(pieces: Pieces, a: np.ndarray, b: np.ndarray, Wa: np.ndarray
     if K == 0:
         return np.zeros(0)
     if pieces.jit_table is not None:
-        from artipg.validate import jit_contacts
+        from artipg.validate import jit_base, jit_contacts
 
-        if jit_contacts.einsum_orders_match():
+        if jit_base.kernels_match():
             return jit_contacts.refine_distance(pieces, a, b, Wa, Wb, starts, iters, stop_below)
     src = np.concatenate([a, b])
     tgt = np.concatenate([b, a])

@@ -23,6 +23,7 @@ import numpy as np
 from artipg.geometry.box import Cuboid
 from artipg.geometry.prism import MAX_SIDES, Prism, TriPrism
 from artipg.geometry.revolve import Frustum, Ring, Sphere, Torus
+from artipg.validate.jit_base import apply, apply_t, clip01, vmax, vmin
 from artipg.validate.kinematics import rigid_inverse
 
 #: SDF codes of the templates the kernels evaluate (0: none of them: a mesh piece).
@@ -176,7 +177,7 @@ def _pair_distance(a, b, Wa, Wb, margin, box, ball, other, src, tgt, rel, keep, 
                 best = v
         d[j] = best
     for j in range(n):
-        out[other[j]] = _min(d[j], d[n + j])
+        out[other[j]] = vmin(d[j], d[n + j])
     return out
 
 
@@ -191,24 +192,6 @@ def _near_box(R, x, y, z, ct, ht, m):
     return True
 
 
-@numba.njit(cache=True, inline="always")
-def _max(a, b):
-    """``np.maximum`` of two numbers (not NaN)."""
-    return a if a > b else b
-
-
-@numba.njit(cache=True, inline="always")
-def _min(a, b):
-    """``np.minimum`` of two numbers (not NaN)."""
-    return a if a < b else b
-
-
-@numba.njit(cache=True, inline="always")
-def _clip01(x):
-    """``np.clip(x, 0.0, 1.0)``."""
-    return 0.0 if x < 0.0 else (1.0 if x > 1.0 else x)
-
-
 # ------------------------------------------------------------------ signed distances
 
 @numba.njit(cache=True)
@@ -221,22 +204,22 @@ def sdf(code, p, aux, x, y, z):
     if code == 2 or code == 3:
         d = _polygon(math.hypot(x, y), z, aux)
         if code == 3:
-            d = _max(d, _wedge(x, y, p[3], aux))
+            d = vmax(d, _wedge(x, y, p[3], aux))
         return d
     if code == 4:
-        return _max(_max(math.sqrt(x * x + y * y + z * z) - p[0], p[1] - z), z - p[2])
+        return vmax(vmax(math.sqrt(x * x + y * y + z * z) - p[0], p[1] - z), z - p[2])
     if code == 5:
-        return _max(math.hypot(math.hypot(x, y) - p[0], z) - p[1], _wedge(x, y, p[2], aux))
+        return vmax(math.hypot(math.hypot(x, y) - p[0], z) - p[1], _wedge(x, y, p[2], aux))
     if code == 6:
-        return _max(_polygon(x, y, aux), abs(z) - p[1] / 2)
-    return _max(_polygon(x, y, aux), abs(z) - p[3] / 2)  # tri prism
+        return vmax(_polygon(x, y, aux), abs(z) - p[1] / 2)
+    return vmax(_polygon(x, y, aux), abs(z) - p[3] / 2)  # tri prism
 
 
 @numba.njit(cache=True, inline="always")
 def _cuboid(sx, sy, sz, x, y, z):
     qx, qy, qz = abs(x) - sx, abs(y) - sy, abs(z) - sz
-    ox, oy, oz = _max(qx, 0.0), _max(qy, 0.0), _max(qz, 0.0)
-    return math.sqrt(ox * ox + oy * oy + oz * oz) + _min(_max(_max(qx, qy), qz), 0.0)
+    ox, oy, oz = vmax(qx, 0.0), vmax(qy, 0.0), vmax(qz, 0.0)
+    return math.sqrt(ox * ox + oy * oy + oz * oz) + vmin(vmax(vmax(qx, qy), qz), 0.0)
 
 
 @numba.njit(cache=True)
@@ -251,10 +234,10 @@ def _polygon(qx, qy, aux):
         px, py = aux[1 + i], aux[1 + _V + i]
         bx, by = aux[1 + nx], aux[1 + _V + nx]
         ex, ey = bx - px, by - py
-        ee = _max(ex * ex + ey * ey, 1e-30)
+        ee = vmax(ex * ex + ey * ey, 1e-30)
         ey_safe = ey if abs(ey) > 1e-30 else 1e-30
         wx, wy = qx - px, qy - py
-        t = _min(_max((wx * ex + wy * ey) / ee, 0.0), 1.0)
+        t = vmin(vmax((wx * ex + wy * ey) / ee, 0.0), 1.0)
         dx, dy = wx - t * ex, wy - t * ey
         d2 = dx * dx + dy * dy
         if d2 < best:
@@ -272,7 +255,7 @@ def _wedge(x, y, arc, aux):
         return -np.inf
     d0 = -y
     d1 = aux[_NS] * x + aux[_CS] * y
-    return _max(d0, d1) if arc <= np.pi else _min(d0, d1)
+    return vmax(d0, d1) if arc <= np.pi else vmin(d0, d1)
 
 
 # ------------------------------------------------------------------ boxes
@@ -398,13 +381,13 @@ def _segment_distance(p0, p1, q0, q1):
         c += d1 * r
         f += d2 * r
     den = a * e - b * b
-    s = _clip01((b * f - c * e) / den) if den > 1e-18 else 0.0
-    t = (b * s + f) / _max(e, 1e-18)
+    s = clip01((b * f - c * e) / den) if den > 1e-18 else 0.0
+    t = (b * s + f) / vmax(e, 1e-18)
     if t < 0:
-        s = _clip01(-c / _max(a, 1e-18))
+        s = clip01(-c / vmax(a, 1e-18))
     elif t > 1:
-        s = _clip01((b - c) / _max(a, 1e-18))
-    t = _clip01(t)
+        s = clip01((b - c) / vmax(a, 1e-18))
+    t = clip01(t)
     out = 0.0
     for k in range(3):
         v = p0[k] + s * (p1[k] - p0[k]) - q0[k] - t * (q1[k] - q0[k])
@@ -416,7 +399,7 @@ def _segment_distance(p0, p1, q0, q1):
 
 def refine_distance(pieces, a, b, Wa, Wb, starts: int, iters: int, stop_below: float) -> np.ndarray:
     """:func:`artipg.validate.contacts.refine_distance`, compiled (the pieces must all
-    have SDF codes, and :func:`einsum_orders_match`)."""
+    have SDF codes, and :func:`artipg.validate.jit_base.kernels_match`)."""
     code, aux = pieces.jit_table
     pieces.require(np.concatenate([a, b]))
     return _refine(a, b, np.ascontiguousarray(Wa), np.ascontiguousarray(Wb), starts, iters, float(stop_below),
@@ -427,48 +410,6 @@ def refine_distance(pieces, a, b, Wa, Wb, starts: int, iters: int, stop_below: f
 _H = 1e-6
 _ON_SURFACE = 1e-5
 _OFFS = np.concatenate([np.eye(3), -np.eye(3)]) * _H
-
-
-@numba.njit(cache=True, inline="always")
-def _apply(W, x0, x1, x2, i):
-    """Row i of ``np.einsum("nij,nj->ni", W[:, :3, :3], x)`` for one row, in the order
-    numpy sums it (terms 0 and 2 first; see :func:`einsum_orders_match`)."""
-    return W[i, 0] * x0 + W[i, 2] * x2 + W[i, 1] * x1
-
-
-@numba.njit(cache=True, inline="always")
-def _apply_t(W, x0, x1, x2, i):
-    """Row i of ``np.einsum("nji,nj->ni", W[:, :3, :3], x)`` for one row."""
-    return W[0, i] * x0 + W[1, i] * x1 + W[2, i] * x2
-
-
-@numba.njit(cache=True)
-def _einsum_probe(W, x):
-    """Both einsum contractions of :func:`einsum_orders_match` written out."""
-    n = len(x)
-    out = np.empty((2, n, 3))
-    for k in range(n):
-        for i in range(3):
-            out[0, k, i] = _apply(W[k], x[k, 0], x[k, 1], x[k, 2], i)
-            out[1, k, i] = _apply_t(W[k], x[k, 0], x[k, 1], x[k, 2], i)
-    return out
-
-
-_EINSUM_OK: list = []
-
-
-def einsum_orders_match() -> bool:
-    """Whether numpy's ``einsum`` sums the 3-term products of the refinement
-    (``"nij,nj->ni"`` and ``"nji,nj->ni"`` on (n, 4, 4) frames) in the order the
-    kernels do on this machine (it depends on numpy's SIMD loops). Probed once."""
-    if not _EINSUM_OK:
-        rng = np.random.default_rng(7)
-        W = rng.normal(size=(512, 4, 4))
-        x = rng.normal(size=(512, 3)) * np.array([1.0, 1e3, 1e-3])
-        got = _einsum_probe(W, x)
-        _EINSUM_OK.append(bool(np.array_equal(got[0], np.einsum("nij,nj->ni", W[:, :3, :3], x))
-                               and np.array_equal(got[1], np.einsum("nji,nj->ni", W[:, :3, :3], x))))
-    return _EINSUM_OK[0]
 
 
 @numba.njit(cache=True)
@@ -493,10 +434,10 @@ def _refine(a, b, Wa, Wb, starts, iters, stop_below, params, code, aux, pts, sta
         for k in range(c):
             x0, x1, x2 = pts[0, start[s] + k], pts[1, start[s] + k], pts[2, start[s] + k]
             for i in range(3):
-                X[k, i] = _apply(Ws, x0, x1, x2, i) + Ws[i, 3]
+                X[k, i] = apply(Ws, x0, x1, x2, i) + Ws[i, 3]
             y0, y1, y2 = X[k, 0] - Wt[0, 3], X[k, 1] - Wt[1, 3], X[k, 2] - Wt[2, 3]
-            d[k] = sdf(code[t], params[t], aux[t], _apply_t(Wt, y0, y1, y2, 0), _apply_t(Wt, y0, y1, y2, 1),
-                       _apply_t(Wt, y0, y1, y2, 2))
+            d[k] = sdf(code[t], params[t], aux[t], apply_t(Wt, y0, y1, y2, 0), apply_t(Wt, y0, y1, y2, 1),
+                       apply_t(Wt, y0, y1, y2, 2))
         order = np.argsort(d, kind="mergesort")  # stable: ties keep the sample order
         for r in range(first[j + 1] - first[j]):
             k = order[r]
@@ -519,7 +460,7 @@ def _refine(a, b, Wa, Wb, starts, iters, stop_below, params, code, aux, pts, sta
         _target_stencil(P, job, K, a, b, Wa, Wb, params, code, aux, offs, Lt, dt, off)
         before = np.empty(K)
         for k in range(K):
-            before[k] = _min(best[k], best[K + k])
+            before[k] = vmin(best[k], best[K + k])
         for r in range(n):
             o = abs(off[r])
             if o <= on_surface:
@@ -530,7 +471,7 @@ def _refine(a, b, Wa, Wb, starts, iters, stop_below, params, code, aux, pts, sta
         gain = -np.inf
         nan = False
         for k in range(K):
-            now = _min(best[k], best[K + k])
+            now = vmin(best[k], best[K + k])
             if not now <= stop_below:
                 done = False
             g = before[k] - now
@@ -542,7 +483,7 @@ def _refine(a, b, Wa, Wb, starts, iters, stop_below, params, code, aux, pts, sta
             break
     out = np.empty(K)
     for k in range(K):
-        out[k] = _min(best[k], best[K + k])
+        out[k] = vmin(best[k], best[K + k])
     return out
 
 
@@ -556,11 +497,11 @@ def _target_stencil(X, job, K, a, b, Wa, Wb, params, code, aux, offs, L, d, off)
         Ws, Wt = (Wa[j], Wb[j]) if j < K else (Wb[j - K], Wa[j - K])
         y0, y1, y2 = X[r, 0] - Wt[0, 3], X[r, 1] - Wt[1, 3], X[r, 2] - Wt[2, 3]
         for i in range(3):
-            L[r, i] = _apply_t(Wt, y0, y1, y2, i)
+            L[r, i] = apply_t(Wt, y0, y1, y2, i)
         _stencil_row(code[t], params[t], aux[t], L[r], offs, d[r])
         y0, y1, y2 = X[r, 0] - Ws[0, 3], X[r, 1] - Ws[1, 3], X[r, 2] - Ws[2, 3]
-        off[r] = sdf(code[s], params[s], aux[s], _apply_t(Ws, y0, y1, y2, 0), _apply_t(Ws, y0, y1, y2, 1),
-                     _apply_t(Ws, y0, y1, y2, 2))
+        off[r] = sdf(code[s], params[s], aux[s], apply_t(Ws, y0, y1, y2, 0), apply_t(Ws, y0, y1, y2, 1),
+                     apply_t(Ws, y0, y1, y2, 2))
 
 
 @numba.njit(cache=True)
@@ -572,7 +513,7 @@ def _source_stencil(X, job, K, a, b, Wa, Wb, params, code, aux, offs, L, d):
         Ws = Wa[j] if j < K else Wb[j - K]
         y0, y1, y2 = X[r, 0] - Ws[0, 3], X[r, 1] - Ws[1, 3], X[r, 2] - Ws[2, 3]
         for i in range(3):
-            L[r, i] = _apply_t(Ws, y0, y1, y2, i)
+            L[r, i] = apply_t(Ws, y0, y1, y2, i)
         _stencil_row(code[s], params[s], aux[s], L[r], offs, d[r])
 
 
@@ -594,9 +535,9 @@ def _step(L, d, job, K, W_first, W_second, H, out):
         g0 = (d[r, 1] - d[r, 4]) / (2 * H)
         g1 = (d[r, 2] - d[r, 5]) / (2 * H)
         g2 = (d[r, 3] - d[r, 6]) / (2 * H)
-        norm = _max(math.sqrt(g0 * g0 + g1 * g1 + g2 * g2), 1e-12)
+        norm = vmax(math.sqrt(g0 * g0 + g1 * g1 + g2 * g2), 1e-12)
         g0, g1, g2 = g0 / norm, g1 / norm, g2 / norm
         d0 = d[r, 0]
         v0, v1, v2 = L[r, 0] - d0 * g0, L[r, 1] - d0 * g1, L[r, 2] - d0 * g2
         for i in range(3):
-            out[r, i] = _apply(W, v0, v1, v2, i) + W[i, 3]
+            out[r, i] = apply(W, v0, v1, v2, i) + W[i, 3]

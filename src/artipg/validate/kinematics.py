@@ -15,6 +15,8 @@ from functools import cached_property
 import numpy as np
 
 MOVABLE = ("revolute", "prismatic", "continuous")
+#: Codes of the movable joint types (:attr:`Kinematics.type_codes`).
+MOVABLE_CODES = {"revolute": 1, "prismatic": 2, "continuous": 3}
 _I4 = np.eye(4)
 
 
@@ -83,6 +85,12 @@ class Kinematics:
     def slides(self) -> np.ndarray:
         """Boolean (J,): the :meth:`movable` joint is prismatic."""
         return np.array([self.joint_types[i] == "prismatic" for i in self.movable()], dtype=bool)
+
+    @cached_property
+    def type_codes(self) -> np.ndarray:
+        """Joint type of each link as a code (L,) int64: 0 fixed (or any other
+        immovable type), 1 revolute, 2 prismatic, 3 continuous."""
+        return np.array([MOVABLE_CODES.get(t, 0) for t in self.joint_types], dtype=np.int64)
 
     @cached_property
     def continuous(self) -> np.ndarray:

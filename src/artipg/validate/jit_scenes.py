@@ -1,0 +1,271 @@
+"""The scenes of :func:`artipg.validate.checks.run_checks` in one compiled pass.
+
+:func:`build` poses the object at rest, every movable joint's sweep and the
+all-open poses, finds the pairs of pieces of each scene (rest: within the floating
+tolerance; sweep and open: overlapping boxes) and, for the pairs that need surface
+samples, the frames between the pieces and which sources come near their targets;
+:func:`scenes` then draws the samples needed and measures every pair
+(:mod:`artipg.validate.jit_contacts`). The scenes are the numpy code's, bit for bit:
+the same poses (:mod:`artipg.validate.kinematics`), boxes, tests and pair order.
+
+Runs only where :func:`artipg.validate.jit_base.kernels_match` holds (the kernels'
+matrix products and sines are numpy's) and up to
+:data:`artipg.validate.contacts._DENSE` pieces (beyond, numpy's pair search is a
+sweep and prune).
+
+This module imports numba: import it lazily (``import artipg`` stays light).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numba
+import numpy as np
+
+from artipg.validate.jit_base import apply_t, matmul4, rigid_inverse
+from artipg.validate.jit_pairs import close_pairs, sweep_pairs, turns_in_place
+
+
+def scenes(kin, pieces, tol, overlap: float):
+    """The rest, sweep and open scenes of :func:`artipg.validate.checks.run_checks`
+    with their distances ``"d"``: ``(W0, c0, h0, [rest, sweep, open...])``."""
+    fracs = np.asarray(tol.open_fractions, dtype=float) if len(kin.movable()) >= 2 else np.zeros(0)
+    (W0, c0, h0, a, b, Wa, Wb, margin, sizes, sw_scene, sw_joint, sw_q, box, ball, other, src, tgt, rel,
+     keep) = build(kin.parent, kin.origin, kin.type_codes, kin.axis, kin.limits, kin.movable(), kin.descendants, pieces.link,
+                   pieces.part, pieces.T, pieces.center, pieces.half, pieces.symmetric, pieces.is_box, pieces.is_ball,
+                   float(tol.floating), int(tol.sweep_poses), fracs, float(overlap))
+    if pieces.jit_table is not None:
+        from artipg.validate.jit_contacts import _pair_distance
+
+        code, aux = pieces.jit_table
+        if len(other):
+            pieces.require(src[keep])
+        d = _pair_distance(a, b, Wa, Wb, margin, box, ball, other, src, tgt, rel, keep, pieces.params, code, aux,
+                           pieces.center, pieces.half, pieces.radial, pieces.points_t, pieces.start, pieces.count)
+    else:
+        from artipg.validate.contacts import pair_distance
+
+        d = pair_distance(pieces, a, b, Wa, Wb, margin)
+    out = []
+    k = 0
+    for i, n in enumerate(sizes.tolist()):
+        s = {"a": a[k:k + n], "b": b[k:k + n], "Wa": Wa[k:k + n], "Wb": Wb[k:k + n], "d": d[k:k + n],
+             "margin": tol.floating if i == 0 else 0.0}
+        if i == 1:
+            s.update(scene=sw_scene, joint=sw_joint, q=sw_q, movable=kin.movable())
+        elif i > 1:
+            s["frac"] = tol.open_fractions[i - 2]
+        out.append(s)
+        k += n
+    return W0, c0, h0, out
+
+
+@numba.njit(cache=True)
+def _poses(parent, origin, jtype, axis, q):
+    """:meth:`artipg.validate.kinematics.Kinematics.poses` with joint values ``q`` (L,)
+    (0: rest)."""
+    L = len(parent)
+    T = np.empty((L, 4, 4))
+    T[0] = np.eye(4)
+    motion = np.empty((4, 4))
+    tmp = np.empty((4, 4))
+    for i in range(1, L):
+        matmul4(T[parent[i]], origin[i], T[i])
+        v = q[i]
+        if v != 0.0 and jtype[i] != 0:
+            motion[:] = np.eye(4)
+            x, y, z = axis[i, 0], axis[i, 1], axis[i, 2]
+            if jtype[i] == 2:
+                motion[0, 3], motion[1, 3], motion[2, 3] = v * x, v * y, v * z
+            else:  # kinematics._motion1
+                c, s = math.cos(v), math.sin(v)
+                C = 1.0 - c
+                motion[0, 0], motion[0, 1], motion[0, 2] = c + x * x * C, x * y * C - z * s, x * z * C + y * s
+                motion[1, 0], motion[1, 1], motion[1, 2] = y * x * C + z * s, c + y * y * C, y * z * C - x * s
+                motion[2, 0], motion[2, 1], motion[2, 2] = z * x * C - y * s, z * y * C + x * s, c + z * z * C
+            tmp[:] = T[i]
+            matmul4(tmp, motion, T[i])
+    return T
+
+
+@numba.njit(cache=True)
+def _posed(P, link, T, center, half):
+    """Piece frames ``P[link] @ T`` and their world boxes (contacts.world_boxes)."""
+    M = len(link)
+    W = np.empty((M, 4, 4))
+    c = np.empty((M, 3))
+    h = np.empty((M, 3))
+    for m in range(M):
+        matmul4(P[link[m]], T[m], W[m])
+        for i in range(3):
+            c[m, i] = W[m, i, 0] * center[m, 0] + W[m, i, 1] * center[m, 1] + W[m, i, 2] * center[m, 2] + W[m, i, 3]
+            h[m, i] = abs(W[m, i, 0]) * half[m, 0] + abs(W[m, i, 1]) * half[m, 1] + abs(W[m, i, 2]) * half[m, 2]
+    return W, c, h
+
+
+@numba.njit(cache=True)
+def build(parent, origin, jtype, axis, limits, movable, desc, link, part, T, center, half, symmetric, is_box, is_ball,
+          floating, n_poses, fracs, overlap):
+    """Every scene's pairs, concatenated (rest, sweep, open per fraction), with what
+    :func:`artipg.validate.jit_contacts._pair_distance` needs."""
+    L, M, J = len(parent), len(link), len(movable)
+    rest = _poses(parent, origin, jtype, axis, np.zeros(L))
+    W0, c0, h0 = _posed(rest, link, T, center, half)
+    ra, rb = close_pairs(c0, h0, floating, part)
+    # sweeps: kinematics.sweep_table, world_axes; checks._sweep_pairs
+    slides = np.empty(J, dtype=np.bool_)
+    cont = np.empty(J, dtype=np.bool_)
+    ax = np.empty((J, 3))
+    pt = np.empty((J, 3))
+    for j in range(J):
+        i = movable[j]
+        slides[j], cont[j] = jtype[i] == 2, jtype[i] == 3
+        for r in range(3):
+            ax[j, r] = rest[i, r, 0] * axis[i, 0] + rest[i, r, 1] * axis[i, 1] + rest[i, r, 2] * axis[i, 2]
+            pt[j, r] = rest[i, r, 3]
+    S = 0
+    V = np.empty((J, n_poses + 1))
+    keep_q = np.zeros((J, n_poses + 1), dtype=np.bool_)
+    if J and M:
+        for j in range(J):
+            lo = 0.0 if cont[j] else limits[movable[j], 0]
+            hi = 0.0 if cont[j] else limits[movable[j], 1]
+            step = (hi - lo) / n_poses
+            for k in range(n_poses + 1):
+                V[j, k] = k * step + lo
+            V[j, n_poses] = hi
+            for k in range(n_poses + 1):
+                if cont[j]:
+                    if k < n_poses:
+                        V[j, k] = 2.0 * np.pi * (k + 1) / (n_poses + 1)
+                    keep_q[j, k] = k < n_poses
+                else:
+                    keep_q[j, k] = abs(V[j, k]) > 1e-12
+                S += keep_q[j, k]
+    sw_joint = np.empty(S, dtype=np.int64)
+    sw_q = np.empty(S)
+    s = 0
+    for j in range(J):
+        for k in range(n_poses + 1):
+            if keep_q[j, k]:
+                sw_joint[s], sw_q[s] = j, V[j, k]
+                s += 1
+    if J and M:
+        subtree = np.empty((J, M), dtype=np.bool_)
+        for j in range(J):
+            for m in range(M):
+                subtree[j, m] = desc[movable[j], link[m]]
+        moving = subtree & ~turns_in_place(ax, pt, slides, symmetric, W0)
+        cq = np.empty(S)
+        sq = np.empty(S)
+        for s in range(S):
+            v = 0.0 if slides[sw_joint[s]] else sw_q[s]
+            cq[s], sq[s] = math.cos(v), math.sin(v)
+        sa, sb, sWa, sWb, sw_scene = sweep_pairs(moving, subtree, sw_joint, sw_q, cq, sq, slides, ax, pt, W0, c0, h0,
+                                                 half, -overlap)
+    else:
+        sa = np.zeros(0, dtype=np.int64)
+        sb = np.zeros(0, dtype=np.int64)
+        sWa = np.zeros((0, 4, 4))
+        sWb = np.zeros((0, 4, 4))
+        sw_scene = np.zeros(0, dtype=np.int64)
+    # all joints open: checks._open_pairs
+    F = len(fracs)
+    # lists typed by a first (empty, unused) entry
+    oa, ob, oWa, oWb = [ra[:0]], [ra[:0]], [sWa[:0]], [sWa[:0]]
+    inv = np.empty((L, 4, 4))
+    for i in range(L):
+        rigid_inverse(rest[i], inv[i])
+    G = np.empty((L, 4, 4))
+    for f in range(F):
+        q = np.zeros(L)
+        for j in range(J):
+            i = movable[j]
+            q[i] = fracs[f] * np.pi if cont[j] else limits[i, 0] + fracs[f] * (limits[i, 1] - limits[i, 0])
+        P = _poses(parent, origin, jtype, axis, q)
+        W, c, h = _posed(P, link, T, center, half)
+        # links moved by the same rigid motion keep their relative pose (checked at rest)
+        for i in range(L):
+            matmul4(P[i], inv[i], G[i])
+        label = np.arange(L)
+        for i in range(L):
+            first = i
+            for k in range(L):
+                same = True
+                for r in range(3):
+                    for cc in range(4):
+                        if not abs(G[i, r, cc] - G[k, r, cc]) < 1e-9:
+                            same = False
+                if same:
+                    first = k
+                    break
+            if first < i:
+                label[i] = label[first]
+        a, b = close_pairs(c, h, -overlap, label[link])
+        Wa = np.empty((len(a), 4, 4))
+        Wb = np.empty((len(a), 4, 4))
+        for r in range(len(a)):
+            Wa[r], Wb[r] = W[a[r]], W[b[r]]
+        oa.append(a)
+        ob.append(b)
+        oWa.append(Wa)
+        oWb.append(Wb)
+    # concatenated, with each row's margin
+    sizes = np.empty(2 + F, dtype=np.int64)
+    sizes[0], sizes[1] = len(ra), len(sa)
+    for f in range(F):
+        sizes[2 + f] = len(oa[f + 1])
+    K = sizes.sum()
+    A = np.empty(K, dtype=np.int64)
+    B = np.empty(K, dtype=np.int64)
+    WA = np.empty((K, 4, 4))
+    WB = np.empty((K, 4, 4))
+    margin = np.zeros(K)
+    for r in range(len(ra)):
+        A[r], B[r], WA[r], WB[r], margin[r] = ra[r], rb[r], W0[ra[r]], W0[rb[r]], floating
+    k = len(ra)
+    A[k:k + len(sa)], B[k:k + len(sa)], WA[k:k + len(sa)], WB[k:k + len(sa)] = sa, sb, sWa, sWb
+    k += len(sa)
+    for f in range(1, F + 1):
+        n = len(oa[f])
+        A[k:k + n], B[k:k + n], WA[k:k + n], WB[k:k + n] = oa[f], ob[f], oWa[f], oWb[f]
+        k += n
+    # pairs measured by samples: frames between the pieces, and the jobs that come near
+    box = np.empty(K, dtype=np.bool_)
+    ball = np.empty(K, dtype=np.bool_)
+    n_other = 0
+    for r in range(K):
+        box[r] = is_box[A[r]] and is_box[B[r]]
+        ball[r] = is_ball[A[r]] and is_ball[B[r]]
+        n_other += not box[r] and not ball[r]
+    other = np.empty(n_other, dtype=np.int64)
+    k = 0
+    for r in range(K):
+        if not box[r] and not ball[r]:
+            other[k] = r
+            k += 1
+    src = np.empty(2 * n_other, dtype=np.int64)
+    tgt = np.empty(2 * n_other, dtype=np.int64)
+    rel = np.empty((2 * n_other, 4, 4))
+    keep = np.empty(2 * n_other, dtype=np.bool_)
+    tmp = np.empty((4, 4))
+    for k in range(n_other):
+        r = other[k]
+        src[k], tgt[k], src[n_other + k], tgt[n_other + k] = A[r], B[r], B[r], A[r]
+        rigid_inverse(WB[r], tmp)
+        matmul4(tmp, WA[r], rel[k])
+        rigid_inverse(WA[r], tmp)
+        matmul4(tmp, WB[r], rel[n_other + k])
+    for j in range(2 * n_other):
+        s, t = src[j], tgt[j]
+        m = margin[other[j % n_other]]
+        ok = True
+        for r in range(3):
+            cj = rel[j, r, 0] * center[s, 0] + rel[j, r, 1] * center[s, 1] + rel[j, r, 2] * center[s, 2] + rel[j, r, 3]
+            e = abs(rel[j, r, 0]) * half[s, 0] + abs(rel[j, r, 1]) * half[s, 1] + abs(rel[j, r, 2]) * half[s, 2]
+            if not (abs(cj - center[t, r]) - e - half[t, r] <= m):
+                ok = False
+        keep[j] = ok
+    return (W0, c0, h0, A, B, WA, WB, margin, sizes, sw_scene, sw_joint, sw_q, box, ball, other, src, tgt, rel,
+            keep)
