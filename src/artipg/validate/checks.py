@@ -334,17 +334,40 @@ def _gap(pieces, W0, src_mask, tgt_mask) -> float:
     return max(best, 0.0)
 
 
-def _floating(kin, pieces, W0, s, tol) -> CheckResult:
-    a, b, D = s["a"], s["b"], s["d"]
-    issues = []
+def _contact_graphs(L, P, pieces, a, b, D, tol):
+    """:func:`artipg.validate.jit_scenes.contact_graphs` in numpy: the link and part
+    contact graphs of the rest pairs (see there)."""
     touch = D <= tol.floating
-    L = kin.n_links
     has_geom = np.bincount(pieces.link, minlength=L) > 0
-    # links: one contact graph holding the root (or the first link with geometry)
     cross = touch & (pieces.link[a] != pieces.link[b])
     comp = _components(L, pieces.link[a[cross]], pieces.link[b[cross]])
     geo = has_geom.nonzero()[0]
-    if len(geo):
+    several = len(geo) > 0 and len(np.unique(comp[geo])) > 1
+    same = touch & (pieces.link[a] == pieces.link[b])
+    pcomp = _components(P, pieces.part[a[same]], pieces.part[b[same]])
+    has_piece = np.bincount(pieces.part, minlength=P) > 0
+    hp = has_piece.nonzero()[0]
+    lo, hi = np.full(L, P), np.full(L, -1)
+    np.minimum.at(lo, pieces.part_link[hp], pcomp[hp])
+    np.maximum.at(hi, pieces.part_link[hp], pcomp[hp])
+    return comp, pcomp, has_geom, has_piece, lo, hi, several
+
+
+def _floating(kin, pieces, W0, s, tol) -> CheckResult:
+    a, b, D = s["a"], s["b"], s["d"]
+    issues = []
+    L = kin.n_links
+    P = len(pieces.part_names)
+    if compiled.ENABLED:
+        from artipg.validate.jit_scenes import contact_graphs
+
+        comp, pcomp, has_geom, has_piece, lo, hi, several = contact_graphs(
+            L, P, pieces.link, pieces.part, pieces.part_link, a, b, D, float(tol.floating))
+    else:
+        comp, pcomp, has_geom, has_piece, lo, hi, several = _contact_graphs(L, P, pieces, a, b, D, tol)
+    # links: one contact graph holding the root (or the first link with geometry)
+    if several:
+        geo = has_geom.nonzero()[0]
         main = comp[geo[0]]
         for c in np.unique(comp[geo]):
             if c == main:
@@ -356,16 +379,8 @@ def _floating(kin, pieces, W0, s, tol) -> CheckResult:
             parents = sorted({kin.names[kin.parent[i]] for i in links if kin.parent[i] >= 0})
             issues.append(Issue("floating", "floating_link", gap, [kin.names[i] for i in links], [],
                                 detail="does not touch the rest of the object (parent: " + ", ".join(parents) + ")"))
-    # parts: the parts of each link form one contact graph
-    P = len(pieces.part_names)
-    same = touch & (pieces.link[a] == pieces.link[b])
-    pcomp = _components(P, pieces.part[a[same]], pieces.part[b[same]])
-    has_piece = np.bincount(pieces.part, minlength=P) > 0
-    hp = has_piece.nonzero()[0]
-    # links whose parts fall into more than one component
-    lo, hi = np.full(kin.n_links, P), np.full(kin.n_links, -1)
-    np.minimum.at(lo, pieces.part_link[hp], pcomp[hp])
-    np.maximum.at(hi, pieces.part_link[hp], pcomp[hp])
+    # parts: the parts of each link form one contact graph; links whose parts fall
+    # into more than one component
     split = (hi > lo).nonzero()[0].tolist()
     if split:
         weight = np.bincount(pieces.part, weights=np.prod(2 * pieces.half, axis=1), minlength=P)

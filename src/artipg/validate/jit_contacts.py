@@ -35,53 +35,80 @@ _NS, _CS = 1 + 2 * _V, 2 + 2 * _V
 _RADIAL_CULL = 200
 
 
-def piece_table(pieces) -> tuple[np.ndarray, np.ndarray]:
-    """The SDF code (M,) int64 and parameter table (M, 3 + 2 MAX_SIDES) float64 of
-    the pieces: every value the row-wise SDFs of :mod:`artipg.validate.rowsdf` compute
-    from the parameters alone, by the same numpy expressions."""
-    M = pieces.n
-    code = np.array([SDF_CODES.get(g, 0) for g in pieces._kinds] + [0], dtype=np.int64)[
-        pieces._kind if M else np.zeros(0, dtype=np.int64)]
-    aux = np.zeros((M, 3 + 2 * _V))
+def piece_table(pieces) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The SDF code (M,) int64, parameter table (M, 3 + 2 MAX_SIDES) float64 and radial
+    extent (M, 2) (:attr:`artipg.validate.shapes.Pieces.radial`) of the pieces: every
+    value the row-wise SDFs of :mod:`artipg.validate.rowsdf` compute from the
+    parameters alone, by the same expressions (the sines and cosines by numpy)."""
+    kinds = pieces._kinds
+    code = np.array([SDF_CODES.get(g, 0) for g in kinds] + [0], dtype=np.int64)[pieces._kind]
     P = pieces.params
-    for c in np.unique(code).tolist():
-        sel = (code == c).nonzero()[0]
-        p = P[sel]
-        if c in (2, 3):  # rowsdf._prepare_profile
+    sn = cs = _NO_FLOAT
+    if Ring in kinds or Torus in kinds:  # rowsdf.prepare_wedge
+        arc = np.where(code == 3, P[:, min(3, P.shape[1] - 1)], P[:, 2])
+        sn, cs = np.sin(arc), np.cos(arc)
+    rows, px, py = _NO_INT, _NO_POLY, _NO_POLY
+    if Prism in kinds:  # rowsdf.prepare_prism
+        rows = (code == 6).nonzero()[0]
+        r, n = P[rows, 0], P[rows, 2]
+        k = np.minimum(np.arange(MAX_SIDES)[:, None], n[None, :] - 1)
+        a = np.pi / n + 2 * np.pi * k / n
+        px, py = np.ascontiguousarray((r * np.cos(a)).T), np.ascontiguousarray((r * np.sin(a)).T)
+    aux, radial = _table(code, P, sn, cs, rows, px, py)
+    return code, aux, radial
+
+
+_NO_FLOAT = np.zeros(0)
+_NO_POLY = np.zeros((0, MAX_SIDES))
+
+
+@numba.njit(cache=True)
+def _table(code, P, sn, cs, prism_rows, px, py):
+    """The rows of :func:`piece_table` (``sn``, ``cs``: sine and cosine of each
+    piece's arc where rings or tori exist; ``px``, ``py``: the prisms' polygons)."""
+    M = len(code)
+    aux = np.zeros((M, 3 + 2 * _V))
+    radial = np.empty((M, 2))
+    for m in range(M):
+        c = code[m]
+        radial[m, 0], radial[m, 1] = -np.inf, np.inf
+        if c == 2 or c == 3:  # rowsdf._prepare_profile
             if c == 2:
-                r0, r1, h = p[:, 0], p[:, 1], p[:, 2]
-                px = [-r0, r0, r1, -r1]
+                r0, r1, h = P[m, 0], P[m, 1], P[m, 2]
+                x0, x1, x2, x3 = -r0, r0, r1, -r1
+                radial[m, 0], radial[m, 1] = 0.0, vmax(r0, r1)
             else:
-                ro, ri, h, tp = p[:, 0], p[:, 1], p[:, 2], p[:, 4]
-                px = [ri, ro, ro + tp, ri + tp]
+                ro, ri, h, tp = P[m, 0], P[m, 1], P[m, 2], P[m, 4]
+                x0, x1, x2, x3 = ri, ro, ro + tp, ri + tp
+                radial[m, 0], radial[m, 1] = vmin(ri, ri + tp), vmax(ro, ro + tp)
             zb, zt = -h / 2, h / 2
-            aux[sel, 0] = 4
-            for k in range(4):
-                aux[sel, 1 + k] = px[k]
-            aux[sel, 1 + _V], aux[sel, 2 + _V], aux[sel, 3 + _V], aux[sel, 4 + _V] = zb, zb, zt, zt
-        elif c == 6:  # rowsdf.prepare_prism
-            r, n = p[:, 0], p[:, 2]
-            k = np.minimum(np.arange(MAX_SIDES)[:, None], n[None, :] - 1)
-            a = np.pi / n + 2 * np.pi * k / n
-            aux[sel, 0] = _V
-            aux[sel, 1:1 + _V] = (r * np.cos(a)).T
-            aux[sel, 1 + _V:1 + 2 * _V] = (r * np.sin(a)).T
+            aux[m, 0] = 4
+            aux[m, 1], aux[m, 2], aux[m, 3], aux[m, 4] = x0, x1, x2, x3
+            aux[m, 1 + _V], aux[m, 2 + _V], aux[m, 3 + _V], aux[m, 4 + _V] = zb, zb, zt, zt
+        elif c == 4:
+            radial[m, 0], radial[m, 1] = 0.0, P[m, 0]
+        elif c == 5:
+            radial[m, 0], radial[m, 1] = P[m, 0] - P[m, 1], P[m, 0] + P[m, 1]
         elif c == 7:  # rowsdf.prepare_tri_prism
-            w, t, a = p[:, 0], p[:, 1], p[:, 2]
-            aux[sel, 0] = 3
-            aux[sel, 1], aux[sel, 2], aux[sel, 3] = -w / 2, w / 2, a
-            aux[sel, 1 + _V], aux[sel, 2 + _V], aux[sel, 3 + _V] = 0.0, 0.0, t
-        if c in (3, 5):  # rowsdf.prepare_wedge
-            arc = p[:, 3] if c == 3 else p[:, 2]
-            aux[sel, _NS], aux[sel, _CS] = -np.sin(arc), np.cos(arc)
-    return code, aux
+            w, t, a = P[m, 0], P[m, 1], P[m, 2]
+            aux[m, 0] = 3
+            aux[m, 1], aux[m, 2], aux[m, 3] = -w / 2, w / 2, a
+            aux[m, 3 + _V] = t
+        if c == 3 or c == 5:  # rowsdf.prepare_wedge
+            aux[m, _NS], aux[m, _CS] = -sn[m], cs[m]
+    for k in range(len(prism_rows)):
+        m = prism_rows[k]
+        aux[m, 0] = _V
+        for v in range(_V):
+            aux[m, 1 + v], aux[m, 1 + _V + v] = px[k, v], py[k, v]
+    return aux, radial
 
 
 def pair_distance(pieces, a, b, Wa, Wb, margin: np.ndarray) -> np.ndarray:
     """:func:`artipg.validate.contacts.pair_distance` (``margin`` (K,)), compiled; the
     pieces must all have SDF codes (see :attr:`artipg.validate.shapes.Pieces.jit_table`)."""
     K = len(a)
-    code, aux = pieces.jit_table
+    code, aux, radial = pieces.jit_table
     box = pieces.is_box[a] & pieces.is_box[b]
     ball = pieces.is_ball[a] & pieces.is_ball[b]
     i = (~box & ~ball).nonzero()[0]
@@ -95,7 +122,7 @@ def pair_distance(pieces, a, b, Wa, Wb, margin: np.ndarray) -> np.ndarray:
     else:
         rel, src, tgt, keep, pts = _NO_REL, _NO_INT, _NO_INT, _NO_BOOL, _NO_PTS
     return _pair_distance(a, b, Wa, Wb, margin, box, ball, i, src, tgt, rel, keep, pieces.params, code, aux,
-                          pieces.center, pieces.half, pieces.radial, pts, pieces.start, pieces.count)
+                          pieces.center, pieces.half, radial, pts, pieces.start, pieces.count)
 
 
 _NO_REL = np.zeros((0, 4, 4))
@@ -400,7 +427,7 @@ def _segment_distance(p0, p1, q0, q1):
 def refine_distance(pieces, a, b, Wa, Wb, starts: int, iters: int, stop_below: float) -> np.ndarray:
     """:func:`artipg.validate.contacts.refine_distance`, compiled (the pieces must all
     have SDF codes, and :func:`artipg.validate.jit_base.kernels_match`)."""
-    code, aux = pieces.jit_table
+    code, aux, _ = pieces.jit_table
     pieces.require(np.concatenate([a, b]))
     return _refine(a, b, np.ascontiguousarray(Wa), np.ascontiguousarray(Wb), starts, iters, float(stop_below),
                    pieces.params, code, aux, pieces.points_t, pieces.start, pieces.count, _H, _ON_SURFACE, _OFFS)

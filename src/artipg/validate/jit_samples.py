@@ -118,6 +118,41 @@ def _draw(comp_area, P, want, meta, q, area, buf, direct, box, density, lo, hi, 
         qoff[b] = qoff[b - 1] + bc[b - 1] * bp[b - 1] * U
     if N > len(buf):
         return out, per, 3 * N
+    if direct and not (family == _TORUS).any():
+        # each component's samples all fall on its one patch: every block's draws
+        # follow from the counts, and only the wanted samples are computed
+        ksum = np.zeros(NB, dtype=np.int64)  # samples per block
+        for r in range(M):
+            for c in range(C):
+                if n[r, c]:
+                    ksum[pblock[patch[c]]] += n[r, c]
+        bpos = np.empty(NB, dtype=np.int64)  # first draw of each block
+        pos = N
+        for b in range(NB):
+            bpos[b] = pos
+            pos += 2 * ksum[b]
+        if pos > len(buf):
+            return out, per, pos
+        seen = np.zeros(NB, dtype=np.int64)  # samples of each block in earlier cells
+        for r in range(M):
+            o = off[r]
+            for c in range(C):
+                k = n[r, c]
+                if k == 0:
+                    continue
+                p = patch[c]
+                b = pblock[p]
+                if want[r]:
+                    base = qoff[b] + (p - bstart[b]) * bp[b] * U + used[r]
+                    u0 = bpos[b] + seen[b]
+                    for j in range(k):
+                        x, y, z = _point(family[b], q, base, U, buf[u0 + j], buf[u0 + ksum[b] + j])
+                        out[0, o], out[1, o], out[2, o] = x, y, z
+                        o += 1
+                else:
+                    o += k
+                seen[b] += k
+        return _box_points(out, per, want, off, F, feat, P), per, 0
     # the piece, component and rank in its piece of every sample, in cell order
     srow = np.empty(N, dtype=np.int64)
     scomp = np.empty(N, dtype=np.int64)
@@ -224,18 +259,24 @@ def _draw(comp_area, P, want, meta, q, area, buf, direct, box, density, lo, hi, 
                     out[1, o] = rho * math.sin(th)
                     out[2, o] = rr * math.sin(v[j])
             pos += k
-    for r in range(M):
+    return _box_points(out, per, want, off, F, feat, P), per, 0
+
+
+@numba.njit(cache=True)
+def _box_points(out, per, want, off, F, feat, P):
+    """A box's corners and edge points after its samples (``F`` of them, or none), in
+    ``out``; ``per`` becomes the count per piece (0 for the pieces not wanted)."""
+    for r in range(len(per)):
         if want[r]:
-            if F:  # a box's corners and edge points after its samples
-                o = off[r] + per[r]
-                for f in range(F):
-                    out[0, o + f] = feat[f, 0] * P[r, 0]
-                    out[1, o + f] = feat[f, 1] * P[r, 1]
-                    out[2, o + f] = feat[f, 2] * P[r, 2]
+            o = off[r] + per[r]
+            for f in range(F):
+                out[0, o + f] = feat[f, 0] * P[r, 0]
+                out[1, o + f] = feat[f, 1] * P[r, 1]
+                out[2, o + f] = feat[f, 2] * P[r, 2]
             per[r] += F
         else:
             per[r] = 0
-    return out, per, 0
+    return out
 
 
 @numba.njit(cache=True, inline="always")

@@ -38,11 +38,11 @@ def scenes(kin, pieces, tol, overlap: float):
     if pieces.jit_table is not None:
         from artipg.validate.jit_contacts import _pair_distance
 
-        code, aux = pieces.jit_table
+        code, aux, radial = pieces.jit_table
         if len(other):
             pieces.require(src[keep])
         d = _pair_distance(a, b, Wa, Wb, margin, box, ball, other, src, tgt, rel, keep, pieces.params, code, aux,
-                           pieces.center, pieces.half, pieces.radial, pieces.points_t, pieces.start, pieces.count)
+                           pieces.center, pieces.half, radial, pieces.points_t, pieces.start, pieces.count)
     else:
         from artipg.validate.contacts import pair_distance
 
@@ -269,3 +269,66 @@ def build(parent, origin, jtype, axis, limits, movable, desc, link, part, T, cen
         keep[j] = ok
     return (W0, c0, h0, A, B, WA, WB, margin, sizes, sw_scene, sw_joint, sw_q, box, ball, other, src, tgt, rel,
             keep)
+
+
+@numba.njit(cache=True)
+def contact_graphs(L, P, link, part, part_link, a, b, D, floating):
+    """The contact graphs of :func:`artipg.validate.checks._floating` from the rest
+    pairs ``a``, ``b`` (distances ``D``): the component label (the smallest member) of
+    every link (L,) over pairs of different links, and of every part (P,) over pairs
+    within a link; which links and parts have pieces; per link the smallest and
+    largest component of its parts (``P`` and -1 without parts); and whether the
+    links with pieces fall into more than one component."""
+    lp = np.arange(L)
+    pp = np.arange(P)
+    for r in range(len(a)):
+        if not D[r] <= floating:
+            continue
+        la, lb = link[a[r]], link[b[r]]
+        if la != lb:
+            _union(lp, la, lb)
+        else:
+            _union(pp, part[a[r]], part[b[r]])
+    comp = np.empty(L, dtype=np.int64)
+    for i in range(L):
+        comp[i] = _root(lp, i)
+    pcomp = np.empty(P, dtype=np.int64)
+    for i in range(P):
+        pcomp[i] = _root(pp, i)
+    has_geom = np.zeros(L, dtype=np.bool_)
+    for m in range(len(link)):
+        has_geom[link[m]] = True
+    has_piece = np.zeros(P, dtype=np.bool_)
+    for m in range(len(part)):
+        has_piece[part[m]] = True
+    lo = np.full(L, P, dtype=np.int64)
+    hi = np.full(L, -1, dtype=np.int64)
+    for p in range(P):
+        if has_piece[p]:
+            lo[part_link[p]] = min(lo[part_link[p]], pcomp[p])
+            hi[part_link[p]] = max(hi[part_link[p]], pcomp[p])
+    main = -1
+    several = False
+    for i in range(L):
+        if has_geom[i]:
+            if main < 0:
+                main = comp[i]
+            elif comp[i] != main:
+                several = True
+    return comp, pcomp, has_geom, has_piece, lo, hi, several
+
+
+@numba.njit(cache=True)
+def _root(parent, x):
+    while parent[x] != x:
+        parent[x] = parent[parent[x]]
+        x = parent[x]
+    return x
+
+
+@numba.njit(cache=True)
+def _union(parent, i, j):
+    """Join the components of i and j under the smaller root (roots stay minima)."""
+    ri, rj = _root(parent, i), _root(parent, j)
+    if ri != rj:
+        parent[max(ri, rj)] = min(ri, rj)

@@ -148,9 +148,10 @@ class Pieces:
 
     @cached_property
     def jit_table(self):
-        """The SDF codes and parameter table of the pieces for the compiled kernels
-        (:func:`artipg.validate.jit_contacts.piece_table`), or None where a piece has no
-        compiled SDF (a mesh) or the kernels are off (:mod:`artipg.validate.compiled`)."""
+        """The SDF codes, parameter table and radial extents of the pieces for the
+        compiled kernels (:func:`artipg.validate.jit_contacts.piece_table`), or None
+        where a piece has no compiled SDF (a mesh) or the kernels are off
+        (:mod:`artipg.validate.compiled`)."""
         if not compiled.ENABLED or any(g is None for g in self._kinds):
             return None
         from artipg.validate.jit_contacts import SDF_CODES, piece_table
