@@ -438,12 +438,33 @@ def _needs_open(kin, pieces, sw, tol, bad) -> dict:
     if not pairs:
         return {}
     up = kin.open_values(1.0)
-    Qs, rows, A, B, Wa, Wb, owner = [], 0, [], [], [], [], []
+    Qs = []
     for j, k in pairs:
         qs = kin.sweep_values(j, tol.sweep_poses)
         Q = np.zeros((len(qs), kin.n_links))
         Q[:, j], Q[:, k] = qs, up[kin.joint_names[k]]
         Qs.append(Q)
+    if compiled.ENABLED and _kernels_match():
+        from artipg.validate.jit_scenes import blocked_rows
+
+        A, B, Wa, Wb, owner = blocked_rows(kin.parent, kin.origin, kin.type_codes, kin.axis, np.concatenate(Qs),
+                                           kin.descendants, pieces.link, pieces.T, pieces.center, pieces.half,
+                                           np.array([j for j, _ in pairs]), np.array([k for _, k in pairs]),
+                                           np.array([len(Q) for Q in Qs]), -_OVERLAP)
+    else:
+        A, B, Wa, Wb, owner = _blocked_rows(kin, pieces, pairs, Qs)
+    d = pair_distance(pieces, A, B, Wa, Wb, 0.0)
+    worst = np.full(len(pairs), -np.inf)
+    np.maximum.at(worst, owner, -d)
+    return {jk: float(w) if np.isfinite(w) else 0.0 for jk, w in zip(pairs, worst)}
+
+
+def _blocked_rows(kin, pieces, pairs, Qs):
+    """The pairs of pieces :func:`_needs_open` measures: for each (moving joint j,
+    blocking joint k) and its joint values ``Qs`` (rows (S, L)), the pieces only j
+    moves against those only k moves, where their boxes overlap; ``(a, b, Wa, Wb,
+    owner)`` (owner: the index of the (j, k) pair)."""
+    rows, A, B, Wa, Wb, owner = 0, [], [], [], [], []
     P = kin.poses_batch(np.concatenate(Qs))
     for p, (j, k) in enumerate(pairs):
         S = len(Qs[p])
@@ -463,11 +484,7 @@ def _needs_open(kin, pieces, sw, tol, bad) -> dict:
         si, ia, ib = np.nonzero(ok)
         A.append(a[ia]), B.append(b[ib]), Wa.append(W[si, ia]), Wb.append(W[si, na + ib])
         owner.append(np.full(len(ia), p))
-    owner = np.concatenate(owner)
-    d = pair_distance(pieces, np.concatenate(A), np.concatenate(B), np.concatenate(Wa), np.concatenate(Wb), 0.0)
-    worst = np.full(len(pairs), -np.inf)
-    np.maximum.at(worst, owner, -d)
-    return {jk: float(w) if np.isfinite(w) else 0.0 for jk, w in zip(pairs, worst)}
+    return (np.concatenate(A), np.concatenate(B), np.concatenate(Wa), np.concatenate(Wb), np.concatenate(owner))
 
 
 def _sweep_result(kin, pieces, sw, opens, tol) -> CheckResult:

@@ -25,6 +25,7 @@ import numpy as np
 
 from artipg.validate.jit_base import apply_t, matmul4, rigid_inverse
 from artipg.validate.jit_pairs import close_pairs, sweep_pairs, turns_in_place
+from artipg.validate.kinematics import _SKEW, _SKEW_SIGN
 
 
 def scenes(kin, pieces, tol, overlap: float):
@@ -332,3 +333,122 @@ def _union(parent, i, j):
     ri, rj = _root(parent, i), _root(parent, j)
     if ri != rj:
         parent[max(ri, rj)] = min(ri, rj)
+
+
+@numba.njit(cache=True)
+def _rotation(axis, q, slide, out):
+    """``out[:] =`` :func:`artipg.validate.kinematics.motion` of one joint value."""
+    v = 0.0 if slide else q
+    c, sn = math.cos(v), math.sin(v)
+    a4 = (axis[0], axis[1], axis[2], 0.0)
+    for i in range(3):
+        for k in range(3):
+            out[i, k] = (axis[i] * axis[k]) * (1.0 - c) + a4[_SKEW[i, k]] * _SKEW_SIGN[i, k] * sn
+        out[i, i] += c
+        out[i, 3] = (q if slide else 0.0) * axis[i]
+        out[3, i] = 0.0
+    out[3, 3] = 1.0
+
+
+@numba.njit(cache=True)
+def poses_batch(parent, origin, jtype, axis, Q):
+    """:meth:`artipg.validate.kinematics.Kinematics.poses_batch`: link poses (S, L, 4, 4)
+    for joint values ``Q`` (S, L)."""
+    S, L = Q.shape
+    T = np.empty((S, L, 4, 4))
+    M = np.empty((4, 4))
+    tmp = np.empty((4, 4))
+    for s in range(S):
+        T[s, 0] = np.eye(4)
+    for i in range(1, L):
+        moves = False
+        if jtype[i] != 0:
+            for s in range(S):
+                if Q[s, i] != 0.0:
+                    moves = True
+        for s in range(S):
+            matmul4(T[s, parent[i]], origin[i], T[s, i])
+            if moves:
+                _rotation(axis[i], Q[s, i], jtype[i] == 2, M)
+                tmp[:] = T[s, i]
+                matmul4(tmp, M, T[s, i])
+    return T
+
+
+@numba.njit(cache=True)
+def blocked_rows(parent, origin, jtype, axis, Q, desc, link, T, center, half, pj, pk, pS, pad):
+    """The pairs of :func:`artipg.validate.checks._needs_open`: for each (moving joint
+    ``pj``, blocking joint ``pk``) link pair and its ``pS`` rows of ``Q``, the pieces
+    only the first moves against those only the second moves, where their boxes
+    overlap; ``(a, b, Wa, Wb, owner)`` in the numpy code's order."""
+    P = poses_batch(parent, origin, jtype, axis, Q)
+    M = len(link)
+    n = 0
+    A = np.empty(16, dtype=np.int64)
+    B = np.empty(16, dtype=np.int64)
+    own = np.empty(16, dtype=np.int64)
+    WA = np.empty((16, 4, 4))
+    WB = np.empty((16, 4, 4))
+    rows = 0
+    for p in range(len(pj)):
+        S = pS[p]
+        na = 0
+        nb = 0
+        for m in range(M):
+            sj, sk = desc[pj[p], link[m]], desc[pk[p], link[m]]
+            na += sj and not sk
+            nb += sk and not sj
+        both = np.empty(na + nb, dtype=np.int64)
+        ia = 0
+        ib = na
+        for m in range(M):
+            sj, sk = desc[pj[p], link[m]], desc[pk[p], link[m]]
+            if sj and not sk:
+                both[ia] = m
+                ia += 1
+            elif sk and not sj:
+                both[ib] = m
+                ib += 1
+        W = np.empty((S, na + nb, 4, 4))
+        c = np.empty((S, na + nb, 3))
+        h = np.empty((S, na + nb, 3))
+        for s in range(S):
+            for x in range(na + nb):
+                m = both[x]
+                matmul4(P[rows + s, link[m]], T[m], W[s, x])
+                for i in range(3):
+                    c[s, x, i] = (W[s, x, i, 0] * center[m, 0] + W[s, x, i, 1] * center[m, 1]
+                                  + W[s, x, i, 2] * center[m, 2] + W[s, x, i, 3])
+                    h[s, x, i] = (abs(W[s, x, i, 0]) * half[m, 0] + abs(W[s, x, i, 1]) * half[m, 1]
+                                  + abs(W[s, x, i, 2]) * half[m, 2])
+        for s in range(S):
+            for x in range(na):
+                for y in range(na, na + nb):
+                    ok = True
+                    for i in range(3):
+                        if not abs(c[s, x, i] - c[s, y, i]) - (h[s, x, i] + h[s, y, i]) < pad:
+                            ok = False
+                    if not ok:
+                        continue
+                    if n == len(A):
+                        A, B, own = _grow_int(A), _grow_int(B), _grow_int(own)
+                        WA, WB = _grow_frames(WA), _grow_frames(WB)
+                    A[n], B[n], own[n] = both[x], both[y], p
+                    WA[n], WB[n] = W[s, x], W[s, y]
+                    n += 1
+        rows += S
+    return A[:n].copy(), B[:n].copy(), WA[:n].copy(), WB[:n].copy(), own[:n].copy()
+
+
+@numba.njit(cache=True)
+def _grow_int(x):
+    y = np.empty(2 * len(x), dtype=x.dtype)
+    y[:len(x)] = x
+    return y
+
+
+@numba.njit(cache=True)
+def _grow_frames(x):
+    y = np.empty((2 * len(x), 4, 4))
+    y[:len(x)] = x
+    return y

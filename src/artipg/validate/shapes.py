@@ -72,43 +72,44 @@ class Pieces:
         Piece index -> ``trimesh.Trimesh`` (piece frame) for mesh pieces.
     """
 
-    def __init__(self, link, part, T, center, half, geom, params, part_names, part_link, rng, meshes=None):
+    def __init__(self, link, part, T, center, half, geom, params, part_names, part_link, rng, meshes=None, *,
+                 kinds=None):
         self.link = np.asarray(link, dtype=np.int64)
         self.part = np.asarray(part, dtype=np.int64)
         self.T = T
         self.center = center
         self.half = half
-        self.geom = list(geom)
         self.params = params
         self.part_names = list(part_names)
         self.part_link = np.asarray(part_link, dtype=np.int64)
         self.meshes = meshes or {}
         # one stream per geometry template (meshes: per piece), children of this seed
         self._seed = stream_seed(rng)
-        index: dict = {}
-        kind = [index.setdefault(g, len(index)) for g in self.geom]  # kinds in order of appearance
-        kinds = list(index)
-        self._kinds = kinds
-        self._kind = np.array(kind, dtype=np.int64)
-        self._nparams = [len(g.params) if g is not None else 0 for g in kinds]
-        M = len(self.geom)
+        if kinds is None:  # kinds in order of appearance, and each piece's
+            index: dict = {}
+            kind = [index.setdefault(g, len(index)) for g in geom]
+            kinds = (list(index), np.array(kind, dtype=np.int64))
+        self._kinds, self._kind = kinds
+        self._nparams = [len(g.params) if g is not None else 0 for g in self._kinds]
+        M = len(self._kind)
         # template of every piece as a small code, for per-template flags
-        code = np.array([_CODES.get(g, 0) for g in kinds] + [0], dtype=np.int64)[self._kind if M else np.zeros(0, int)]
+        code = np.array([_CODES.get(g, 0) for g in self._kinds] + [0], dtype=np.int64)[self._kind]
         self._code = code
         self.is_box = code == _CODES[Cuboid]
         # full solids of revolution about their local z axis (frustum, full ring or
-        # torus, sphere): unchanged by a turn about that axis
-        w = self.params.shape[1]
-        full = self.params[:, 3] >= 2 * np.pi - 1e-9 if w > 3 else np.zeros(M, bool)
-        arc = self.params[:, 2] >= 2 * np.pi - 1e-9 if w > 2 else np.zeros(M, bool)
-        # whole balls (a sphere not cut by its slab): exact ball-ball distances
-        sphere = code == _CODES[Sphere]
-        if sphere.any():
+        # torus, sphere): unchanged by a turn about that axis; whole balls (a sphere
+        # not cut by its slab): exact ball-ball distances
+        symmetric = code == _CODES[Frustum]
+        self.is_ball = np.zeros(M, dtype=bool)
+        if Sphere in self._kinds:
+            sphere = code == _CODES[Sphere]
             self.is_ball = sphere & (self.params[:, 1] <= -self.params[:, 0]) & (self.params[:, 2] >= self.params[:, 0])
-        else:
-            self.is_ball = sphere
-        self.symmetric = ((code == _CODES[Frustum]) | sphere | ((code == _CODES[Ring]) & full)
-                          | ((code == _CODES[Torus]) & arc))
+            symmetric |= sphere
+        if Ring in self._kinds:
+            symmetric |= (code == _CODES[Ring]) & (self.params[:, 3] >= 2 * np.pi - 1e-9)
+        if Torus in self._kinds:
+            symmetric |= (code == _CODES[Torus]) & (self.params[:, 2] >= 2 * np.pi - 1e-9)
+        self.symmetric = symmetric
         self.symmetric_rows = self.symmetric.nonzero()[0]
         self.start = np.zeros(M, dtype=np.int64)
         self.count = np.zeros(M, dtype=np.int64)
@@ -116,6 +117,11 @@ class Pieces:
         self._chunks: list = []  # (3, n) blocks of samples, in drawing order
         self._size = 0
         self._points_t = np.zeros((3, 0))
+
+    @property
+    def geom(self) -> list:
+        """Geometry template of every piece (None: a mesh piece)."""
+        return [self._kinds[k] for k in self._kind.tolist()]
 
     @property
     def n(self) -> int:
@@ -303,33 +309,34 @@ class Pieces:
         """
         table = obj.primitive_table
         local = getattr(table, "local_boxes", None)  # the templates' bounds_batch, cached by generation
-        geom, Ps, Ts, links, parts, boxes = [], [], [], [], [], []
+        index: dict = {}  # templates in order of appearance
+        Ps, Ts, links, parts, boxes, kind = [], [], [], [], [], []
         for g in table.groups:
             T = table.prim_T[g.prim]
             if g.geom is RectRing:
                 sizes, offs = _rect_ring_boxes(g.P)
                 Tb = T.repeat(4, axis=0)
                 Tb[:, :3, 3] += np.einsum("kij,kj->ki", Tb[:, :3, :3], offs)
-                geom += [Cuboid] * len(sizes)
+                kind.append((index.setdefault(Cuboid, len(index)), len(sizes)))
                 Ps.append(sizes)
                 Ts.append(Tb)
                 links.append(np.repeat(g.link, 4))
                 parts.append(np.repeat(g.part, 4))
                 boxes.append(Cuboid.bounds_batch(sizes))
             else:
-                geom += [g.geom] * len(g.P)
+                kind.append((index.setdefault(g.geom, len(index)), len(g.P)))
                 Ps.append(g.P)
                 Ts.append(T)
                 links.append(g.link)
                 parts.append(g.part)
                 boxes.append(local[g.prim] if local is not None else g.geom.bounds_batch(g.P))
-        M = len(geom)
         width = max(P.shape[1] for P in Ps)
-        if len(Ps) == 1 and width == Ps[0].shape[1]:
+        one = len(Ps) == 1
+        if one and width == Ps[0].shape[1]:
             params = np.array(Ps[0], dtype=float)
             b = boxes[0]
         else:
-            params = np.zeros((M, width))
+            params = np.zeros((sum(len(P) for P in Ps), width))
             k = 0
             for P in Ps:
                 params[k:k + len(P), :P.shape[1]] = P
@@ -337,10 +344,10 @@ class Pieces:
             b = np.concatenate(boxes)
         center = 0.5 * (b[:, 0] + b[:, 1])
         half = 0.5 * (b[:, 1] - b[:, 0])
-        one = len(links) == 1
+        kinds = (list(index), np.repeat(*np.array(kind, dtype=np.int64).reshape(-1, 2).T))
         return cls(links[0] if one else np.concatenate(links), parts[0] if one else np.concatenate(parts),
-                   Ts[0] if one else np.concatenate(Ts), center, half, geom, params,
-                   [p.name for p in obj.parts], obj.part_link, rng)
+                   Ts[0] if one else np.concatenate(Ts), center, half, None, params,
+                   [p.name for p in obj.parts], obj.part_link, rng, kinds=kinds)
 
 
 #: Small codes of the templates that get per-template flags (0: any other, meshes).
