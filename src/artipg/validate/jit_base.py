@@ -9,8 +9,8 @@ against the kernels' versions before any kernel that relies on them runs:
   entry as one fused multiply-add chain in k order (:func:`matmul4`);
 - ``np.einsum("nij,nj->ni", R, x)`` sums the three products as (0 + 2) + 1 and
   ``np.einsum("nji,nj->ni", R, x)`` in order (:func:`apply`, :func:`apply_t`);
-- ``np.cos`` and ``np.sin`` are the C library's ``cos`` and ``sin``, which the
-  kernels call.
+- ``np.cos``, ``np.sin`` and ``np.hypot`` are the C library's, which the kernels
+  call.
 
 Where a probe fails, the checks run the numpy code instead (slower, same results).
 
@@ -103,7 +103,7 @@ def _probe(A, B, x, q):
     prod = np.empty((n, 4, 4))
     inv = np.empty((n, 4, 4))
     ein = np.empty((2, n, 3))
-    trig = np.empty((2, len(q)))
+    trig = np.empty((3, len(q)))
     for k in range(n):
         matmul4(A[k], B[k], prod[k])
         rigid_inverse(A[k], inv[k])
@@ -113,6 +113,7 @@ def _probe(A, B, x, q):
     for k in range(len(q)):
         trig[0, k] = math.cos(q[k])
         trig[1, k] = math.sin(q[k])
+        trig[2, k] = math.hypot(q[k], q[len(q) - 1 - k])
     return prod, inv, ein, trig
 
 
@@ -135,5 +136,6 @@ def kernels_match() -> bool:
                            and np.array_equal(prod[0], A[0] @ B[0]) and np.array_equal(inv, rigid_inverse_np(A))
                            and np.array_equal(ein[0], np.einsum("nij,nj->ni", A[:, :3, :3], x))
                            and np.array_equal(ein[1], np.einsum("nji,nj->ni", A[:, :3, :3], x))
-                           and np.array_equal(trig[0], np.cos(q)) and np.array_equal(trig[1], np.sin(q))))
+                           and np.array_equal(trig[0], np.cos(q)) and np.array_equal(trig[1], np.sin(q))
+                           and np.array_equal(trig[2], np.hypot(q, q[::-1]))))
     return _MATCH[0]

@@ -18,7 +18,9 @@ import math
 import numba
 import numpy as np
 
-from artipg.geometry.box import Cuboid
+from artipg.geometry.box import _BOX_TABLE, Cuboid
+from artipg.geometry.revolve import _FRUSTUM_CAPS, _RING_CAPS, Frustum, Ring, Sphere, Torus
+from artipg.validate.jit_base import fma, kernels_match, vmax
 from artipg.validate.shapes import _BOX_FEATURES, DENSITY, MAX_PER_COMPONENT, MIN_PER_COMPONENT, _layout
 from artipg.validate.streams import _CAP, _buffer
 
@@ -48,6 +50,8 @@ def draw_group(geom, P: np.ndarray, seed: int, key: int, want: np.ndarray | None
         (zero for the pieces not wanted); None when the draws would run past the
         cached part of the stream (the caller falls back to ``_sample_group``).
     """
+    if geom in TEMPLATE_CODES and kernels_match():
+        return draw_template(geom, P, seed, key, want)
     comp_area = geom.component_areas(P)
     positive = comp_area > 0.0
     on = positive.any(axis=1)  # pieces with samples
@@ -315,3 +319,233 @@ def _point(fam, q, base, U, u, v):
     rho = math.sqrt(m if m >= 0.0 else 0.0)
     th = v * _TWO_PI
     return math.cos(th) * rho, math.sin(th) * rho, z
+
+
+# ------------------------------------------------------------------ templates written out
+
+#: Templates whose component areas and patch parameters :func:`_draw_template` computes
+#: itself (the templates' own expressions, in the same order), and their codes.
+TEMPLATE_CODES = {Cuboid: 1, Frustum: 2, Ring: 3, Sphere: 4, Torus: 5}
+_C = (0, 6, 3, 6, 3, 3)  # components per template code
+#: Block (patch list position) and family of each component, per template code.
+_BLOCK = np.array([[0] * 6, [0] * 6, [0, 1, 1, 0, 0, 0], [0, 0, 1, 1, 2, 2], [0, 1, 1, 0, 0, 0], [0, 1, 1, 0, 0, 0]])
+_FAM = np.array([[0] * 6, [0] * 6, [3, 2, 2, 0, 0, 0], [3, 3, 2, 2, 0, 0], [4, 2, 2, 0, 0, 0], [5, 2, 2, 0, 0, 0]])
+
+
+def draw_template(geom, P: np.ndarray, seed: int, key: int, want: np.ndarray | None = None):
+    """:func:`draw_group` for the templates of :data:`TEMPLATE_CODES` without calling
+    their numpy ``component_areas`` and ``patches``: the kernel computes both (bit
+    for bit; needs :func:`artipg.validate.jit_base.kernels_match`)."""
+    want = np.ones(len(P), dtype=np.bool_) if want is None else want
+    size = 4096
+    while True:
+        buf = _buffer(seed, key, size)
+        out, per, short = _draw_template(TEMPLATE_CODES[geom], P, want, buf, DENSITY, MIN_PER_COMPONENT,
+                                         MAX_PER_COMPONENT, _BOX_FEATURES, _BOX_TABLE, _FRUSTUM_CAPS, _RING_CAPS,
+                                         _BLOCK, _FAM)
+        if not short:
+            return out, per
+        size = max(short, 2 * len(buf))
+        if size > _CAP:
+            return None
+
+
+@numba.njit(cache=True)
+def _linear(table, patch, j, P, r):
+    """Parameter j of patch ``patch`` of row r by a :func:`artipg.geometry.patches.linear`
+    table (c, p, q + 1): ``A @ P.T + b`` as numpy (BLAS) computes it."""
+    q = table.shape[2] - 1
+    s = table[patch, j, 0] * P[r, 0]
+    for k in range(1, q):
+        s = fma(table[patch, j, k], P[r, k], s)
+    return s + table[patch, j, q]
+
+
+@numba.njit(cache=True)
+def _areas(code, P, r, out):
+    """``geom.component_areas(P)[r]`` of template ``code`` into ``out``."""
+    if code == 1:
+        sx, sy, sz = P[r, 0], P[r, 1], P[r, 2]
+        out[0] = out[1] = sy * sz
+        out[2] = out[3] = sx * sz
+        out[4] = out[5] = sx * sy
+    elif code == 2:
+        r0, r1, h = P[r, 0], P[r, 1], P[r, 2]
+        out[0] = (np.pi * (r0 + r1)) * math.hypot(h, r1 - r0)
+        out[1] = np.pi * P[r, 3] * r0 * r0
+        out[2] = np.pi * P[r, 4] * r1 * r1
+    elif code == 3:
+        ro, ri, h, arc, tp = P[r, 0], P[r, 1], P[r, 2], P[r, 3], P[r, 4]
+        slant = math.hypot(h, tp)
+        out[0] = arc * (ro + tp / 2) * slant
+        out[1] = arc * (ri + tp / 2) * slant
+        ro1, ri1 = ro + tp, ri + tp
+        out[2] = arc / 2 * (ro * ro - ri * ri)
+        out[3] = arc / 2 * (ro1 * ro1 - ri1 * ri1)
+        out[4] = out[5] = 0.0 if arc >= _TWO_PI - 1e-9 else (ro - ri) * h
+    elif code == 4:
+        R, lo, hi = P[r, 0], P[r, 1], P[r, 2]
+        out[0] = _TWO_PI * R * (hi - lo)
+        out[1] = np.pi * vmax(R * R - lo * lo, 0.0)
+        out[2] = np.pi * vmax(R * R - hi * hi, 0.0)
+    else:
+        R, rr, arc = P[r, 0], P[r, 1], P[r, 2]
+        part = 0.0 if arc >= _TWO_PI - 1e-9 else 1.0
+        out[0] = _TWO_PI * rr * R * arc
+        out[1] = np.pi * rr * rr * P[r, 3] * part
+        out[2] = np.pi * rr * rr * P[r, 4] * part
+
+
+@numba.njit(cache=True)
+def _patch(code, comp, P, r, box_t, frustum_t, ring_t, q):
+    """Parameters (``q[:15]``, as the family's rows) of the patch of component ``comp``
+    of row r, as ``geom.patches(P)`` makes them."""
+    q[:] = 0.0
+    if code == 1:  # one rect per face, a linear table
+        for j in range(12):
+            q[j] = _linear(box_t, comp, j, P, r)
+    elif code == 2:
+        if comp == 0:  # the band, written out in Frustum.patches
+            z = P[r, 2] / 2
+            q[0], q[1], q[2], q[3], q[4] = P[r, 0], P[r, 1], -z, z, _TWO_PI
+        else:
+            for j in range(15):
+                q[j] = _linear(frustum_t, comp - 1, j, P, r)
+    elif code == 3:
+        ro, ri, h, arc, tp = P[r, 0], P[r, 1], P[r, 2], P[r, 3], P[r, 4]
+        z = h / 2
+        if comp < 2:  # outer and inner walls
+            rb = ro if comp == 0 else ri
+            q[0], q[1], q[2], q[3], q[4] = rb, rb + tp, -z, z, arc
+        elif comp < 4:  # bottom and top annuli, a linear table
+            for j in range(15):
+                q[j] = _linear(ring_t, comp - 2, j, P, r)
+        else:  # the ends of a partial ring
+            e = 0.0 if comp == 4 else arc
+            ce, se = math.cos(e), math.sin(e)
+            q[0], q[1], q[2] = ri * ce, ri * se, -z
+            q[3], q[4], q[5] = (ro - ri) * ce, (ro - ri) * se, 0.0
+            q[6], q[7], q[8] = tp * ce, tp * se, h
+    elif code == 4:
+        if comp == 0:  # the zone
+            q[0], q[1], q[2] = P[r, 0], P[r, 1], P[r, 2]
+        else:  # the cut discs
+            R, zc = P[r, 0], P[r, comp]
+            q[2], q[3], q[7] = zc, 1.0, 1.0
+            q[13] = math.sqrt(vmax(R * R - zc * zc, 0.0))
+            q[14] = _TWO_PI
+    else:
+        if comp == 0:  # the tube
+            q[0], q[1], q[2] = P[r, 0], P[r, 1], P[r, 2]
+        else:  # the end discs of a partial torus
+            e = 0.0 if comp == 1 else P[r, 2]
+            ce, se = math.cos(e), math.sin(e)
+            q[0], q[1], q[2] = P[r, 0] * ce, P[r, 0] * se, 0.0
+            q[3], q[4], q[5] = ce, se, 0.0
+            q[6], q[7], q[8] = 0.0, 0.0, 1.0
+            q[12], q[13], q[14] = 0.0, P[r, 1], _TWO_PI
+
+
+@numba.njit(cache=True)
+def _draw_template(code, P, want, buf, density, lo, hi, feat, box_t, frustum_t, ring_t, block, fam):
+    """The kernel of :func:`draw_template`: ``(points (3, N), counts (M,), short)``."""
+    M = len(P)
+    C = _C_OF[code]
+    area = np.empty(6)
+    n = np.zeros((M, C), dtype=np.int64)
+    per = np.zeros(M, dtype=np.int64)
+    N = 0
+    for r in range(M):
+        _areas(code, P, r, area)
+        for c in range(C):
+            a = area[c]
+            if a > 0.0:
+                x = np.ceil(a * density)
+                x = x if x >= lo else float(lo)
+                x = x if x <= hi else float(hi)
+                n[r, c] = int(x)
+                per[r] += n[r, c]
+        N += per[r]
+    F = len(feat) if code == 1 else 0
+    off = np.zeros(M, dtype=np.int64)
+    total = 0
+    for r in range(M):
+        if want[r]:
+            off[r] = total
+            total += per[r] + F
+    out = np.empty((3, total))
+    NB = 3
+    ksum = np.zeros(NB, dtype=np.int64)
+    for r in range(M):
+        for c in range(C):
+            ksum[block[code, c]] += n[r, c]
+    q = np.empty(15)
+    # the pick takes one draw per sample; then each block with samples draws in turn
+    pos = N
+    bpos = np.zeros(NB, dtype=np.int64)
+    tube = np.empty(0)
+    for b in range(NB):
+        bpos[b] = pos
+        if ksum[b] == 0:
+            continue
+        if code == 5 and b == 0:
+            # the tube: artipg.geometry.patches.torus_tube_angles over all its samples
+            k = ksum[0]
+            tube = np.empty(k)
+            Rs = np.empty(k)
+            rs = np.empty(k)
+            t = 0
+            for r in range(M):
+                for _ in range(n[r, 0]):
+                    Rs[t], rs[t] = P[r, 0], P[r, 1]
+                    t += 1
+            todo = np.arange(k)
+            nt = k
+            while nt:
+                if pos + 2 * nt > len(buf):
+                    return out, per, pos + 2 * nt + 4 * N
+                m = 0
+                for t in range(nt):
+                    i = todo[t]
+                    cand = buf[pos + t] * _TWO_PI
+                    if buf[pos + nt + t] * (Rs[i] + rs[i]) <= Rs[i] + rs[i] * math.cos(cand):
+                        tube[i] = cand
+                    else:
+                        todo[m] = i
+                        m += 1
+                pos += 2 * nt
+                nt = m
+            bpos[b] = pos  # then one angle per sample along the arc
+            pos += k
+        else:
+            pos += 2 * ksum[b]
+    if pos > len(buf):
+        return out, per, pos + N
+    seen = np.zeros(NB, dtype=np.int64)
+    for r in range(M):
+        o = off[r]
+        for c in range(C):
+            k = n[r, c]
+            if k == 0:
+                continue
+            b = block[code, c]
+            if want[r]:
+                _patch(code, c, P, r, box_t, frustum_t, ring_t, q)
+                u0 = bpos[b] + seen[b]
+                for j in range(k):
+                    if code == 5 and c == 0:
+                        v = tube[seen[b] + j]
+                        th = buf[u0 + j] * q[2]
+                        rho = q[0] + q[1] * math.cos(v)
+                        out[0, o], out[1, o], out[2, o] = rho * math.cos(th), rho * math.sin(th), q[1] * math.sin(v)
+                    else:
+                        x, y, z = _point(fam[code, c], q, 0, 1, buf[u0 + j], buf[u0 + ksum[b] + j])
+                        out[0, o], out[1, o], out[2, o] = x, y, z
+                    o += 1
+            else:
+                o += k
+            seen[b] += k
+    return _box_points(out, per, want, off, F, feat, P), per, 0
+
+
+_C_OF = np.array(_C, dtype=np.int64)
