@@ -417,24 +417,26 @@ def _blocker(kin, link: int, j: int) -> int:
 
 
 def _blockers(kin, pieces, sw, bad):
-    """Moving joint and :func:`_blocker` (link indices, lists) of each sweep row ``bad``."""
+    """Moving joint and :func:`_blocker` (link indices, (len(bad),) int64 arrays) of
+    each sweep row ``bad``."""
     j = sw["movable"][sw["joint"][sw["scene"][bad]]]
     lb = pieces.link[sw["b"][bad]]
     _, first, inv = np.unique(j * kin.n_links + lb, return_index=True, return_inverse=True)
     k = np.array([_blocker(kin, int(lb[f]), int(j[f])) for f in first.tolist()], dtype=np.int64)[inv]
-    return j.tolist(), k.tolist()
+    return j, k
 
 
-def _needs_open(kin, pieces, sw, tol, bad) -> dict:
+def _needs_open(kin, pieces, sw, tol, blockers) -> dict:
     """Sweep collisions with a part that another joint moves (a rack behind a
     dishwasher door): re-checked with that joint open; returns {(j, k): depth} of
     the (moving joint, blocking joint) link indices, depth < 0 when opening k clears
-    the way for j. All (j, k) pairs share one batch of poses and one distance pass."""
-    pairs = {}
-    for j, k in zip(*_blockers(kin, pieces, sw, bad)):  # in order of first occurrence
-        if k > 0:
-            pairs[(j, k)] = None
-    pairs = list(pairs)
+    the way for j. All (j, k) pairs share one batch of poses and one distance pass.
+    ``blockers``: :func:`_blockers` of the colliding sweep rows."""
+    j, k = blockers
+    sel = k > 0
+    j, k = j[sel], k[sel]
+    first = np.sort(np.unique(j * kin.n_links + k, return_index=True)[1])  # in order of first occurrence
+    pairs = list(zip(j[first].tolist(), k[first].tolist()))
     if not pairs:
         return {}
     up = kin.open_values(1.0)
@@ -496,12 +498,14 @@ def _sweep_result(kin, pieces, sw, opens, tol) -> CheckResult:
     if len(bad):
         # a collision with a part another joint moves is no fault when opening that
         # joint clears the way (racks behind a door): keep the rest
-        deps = _needs_open(kin, pieces, sw, tol, bad)
+        bj, bk = _blockers(kin, pieces, sw, bad)
+        deps = _needs_open(kin, pieces, sw, tol, (bj, bk))
         cleared = {jk for jk, depth in deps.items() if depth <= tol.penetration}
         if cleared:
             info["needs_open"] = {kin.joint_names[j]: sorted(kin.joint_names[k] for jj, k in cleared if jj == j)
                                   for j in sorted({j for j, _ in cleared})}
-            bad = bad[[jk not in cleared for jk in zip(*_blockers(kin, pieces, sw, bad))]]
+            L = kin.n_links
+            bad = bad[~((bk > 0) & np.isin(bj * L + bk, [j * L + k for j, k in cleared]))]
             worst = max(0.0, float(-D[bad].min())) if len(bad) else 0.0
     if len(bad):
         joint = sw["joint"][sw["scene"][bad]]

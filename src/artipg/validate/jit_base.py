@@ -39,6 +39,14 @@ def fma(typingctx, a, b, c):
 
 
 @numba.njit(cache=True, inline="always")
+def set_identity(out):
+    """``out[:] = np.eye(4)``."""
+    for i in range(4):
+        for j in range(4):
+            out[i, j] = 1.0 if i == j else 0.0
+
+
+@numba.njit(cache=True, inline="always")
 def mm_entry(A, B, i, j):
     """Entry (i, j) of ``A @ B`` for (4, 4) frames, as this machine's BLAS computes it."""
     s = A[i, 0] * B[0, j]
@@ -47,7 +55,7 @@ def mm_entry(A, B, i, j):
     return fma(A[i, 3], B[3, j], s)
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, inline="always")
 def matmul4(A, B, out):
     """``out[:] = A @ B`` for (4, 4) frames (see :func:`mm_entry`)."""
     for i in range(4):
@@ -55,7 +63,7 @@ def matmul4(A, B, out):
             out[i, j] = mm_entry(A, B, i, j)
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, inline="always")
 def rigid_inverse(T, out):
     """``out[:] =`` :func:`artipg.validate.kinematics.rigid_inverse` of one frame."""
     for i in range(3):

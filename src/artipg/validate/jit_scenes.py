@@ -23,8 +23,8 @@ import math
 import numba
 import numpy as np
 
-from artipg.validate.jit_base import apply_t, matmul4, rigid_inverse
-from artipg.validate.jit_pairs import close_pairs, sweep_pairs, turns_in_place
+from artipg.validate.jit_base import matmul4, rigid_inverse, set_identity
+from artipg.validate.jit_pairs import _overlap, close_pairs, sweep_pairs, turns_in_place
 from artipg.validate.kinematics import _SKEW, _SKEW_SIGN
 
 
@@ -68,14 +68,14 @@ def _poses(parent, origin, jtype, axis, q):
     (0: rest)."""
     L = len(parent)
     T = np.empty((L, 4, 4))
-    T[0] = np.eye(4)
+    set_identity(T[0])
     motion = np.empty((4, 4))
     tmp = np.empty((4, 4))
     for i in range(1, L):
         matmul4(T[parent[i]], origin[i], T[i])
         v = q[i]
         if v != 0.0 and jtype[i] != 0:
-            motion[:] = np.eye(4)
+            set_identity(motion)
             x, y, z = axis[i, 0], axis[i, 1], axis[i, 2]
             if jtype[i] == 2:
                 motion[0, 3], motion[1, 3], motion[2, 3] = v * x, v * y, v * z
@@ -359,7 +359,7 @@ def poses_batch(parent, origin, jtype, axis, Q):
     M = np.empty((4, 4))
     tmp = np.empty((4, 4))
     for s in range(S):
-        T[s, 0] = np.eye(4)
+        set_identity(T[s, 0])
     for i in range(1, L):
         moves = False
         if jtype[i] != 0:
@@ -424,11 +424,7 @@ def blocked_rows(parent, origin, jtype, axis, Q, desc, link, T, center, half, pj
         for s in range(S):
             for x in range(na):
                 for y in range(na, na + nb):
-                    ok = True
-                    for i in range(3):
-                        if not abs(c[s, x, i] - c[s, y, i]) - (h[s, x, i] + h[s, y, i]) < pad:
-                            ok = False
-                    if not ok:
+                    if not _overlap(c[s, x], h[s, x], c[s, y], h[s, y], pad):
                         continue
                     if n == len(A):
                         A, B, own = _grow_int(A), _grow_int(B), _grow_int(own)
