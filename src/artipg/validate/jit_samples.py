@@ -156,7 +156,7 @@ def _draw(comp_area, P, want, meta, q, area, buf, direct, box, density, lo, hi, 
                 else:
                     o += k
                 seen[b] += k
-        return _box_points(out, per, want, off, F, feat, P), per, 0
+        return _box_points(out, per, want, off, F, feat, P, np.arange(M)), per, 0
     # the piece, component and rank in its piece of every sample, in cell order
     srow = np.empty(N, dtype=np.int64)
     scomp = np.empty(N, dtype=np.int64)
@@ -263,20 +263,20 @@ def _draw(comp_area, P, want, meta, q, area, buf, direct, box, density, lo, hi, 
                     out[1, o] = rho * math.sin(th)
                     out[2, o] = rr * math.sin(v[j])
             pos += k
-    return _box_points(out, per, want, off, F, feat, P), per, 0
+    return _box_points(out, per, want, off, F, feat, P, np.arange(M)), per, 0
 
 
 @numba.njit(cache=True)
-def _box_points(out, per, want, off, F, feat, P):
+def _box_points(out, per, want, off, F, feat, P, rows):
     """A box's corners and edge points after its samples (``F`` of them, or none), in
     ``out``; ``per`` becomes the count per piece (0 for the pieces not wanted)."""
     for r in range(len(per)):
         if want[r]:
             o = off[r] + per[r]
             for f in range(F):
-                out[0, o + f] = feat[f, 0] * P[r, 0]
-                out[1, o + f] = feat[f, 1] * P[r, 1]
-                out[2, o + f] = feat[f, 2] * P[r, 2]
+                out[0, o + f] = feat[f, 0] * P[rows[r], 0]
+                out[1, o + f] = feat[f, 1] * P[rows[r], 1]
+                out[2, o + f] = feat[f, 2] * P[rows[r], 2]
             per[r] += F
         else:
             per[r] = 0
@@ -340,9 +340,9 @@ def draw_template(geom, P: np.ndarray, seed: int, key: int, want: np.ndarray | N
     size = 4096
     while True:
         buf = _buffer(seed, key, size)
-        out, per, short = _draw_template(TEMPLATE_CODES[geom], P, want, buf, DENSITY, MIN_PER_COMPONENT,
-                                         MAX_PER_COMPONENT, _BOX_FEATURES, _BOX_TABLE, _FRUSTUM_CAPS, _RING_CAPS,
-                                         _BLOCK, _FAM)
+        out, per, short = _draw_template(TEMPLATE_CODES[geom], P, np.arange(len(P)), want, buf, DENSITY,
+                                         MIN_PER_COMPONENT, MAX_PER_COMPONENT, _BOX_FEATURES, _BOX_TABLE,
+                                         _FRUSTUM_CAPS, _RING_CAPS, _BLOCK, _FAM)
         if not short:
             return out, per
         size = max(short, 2 * len(buf))
@@ -447,16 +447,17 @@ def _patch(code, comp, P, r, box_t, frustum_t, ring_t, q):
 
 
 @numba.njit(cache=True)
-def _draw_template(code, P, want, buf, density, lo, hi, feat, box_t, frustum_t, ring_t, block, fam):
-    """The kernel of :func:`draw_template`: ``(points (3, N), counts (M,), short)``."""
-    M = len(P)
+def _draw_template(code, P, rows, want, buf, density, lo, hi, feat, box_t, frustum_t, ring_t, block, fam):
+    """The kernel of :func:`draw_template` for the pieces ``P[rows]``: ``(points (3, N),
+    counts (M,), short)``."""
+    M = len(rows)
     C = _C_OF[code]
     area = np.empty(6)
     n = np.zeros((M, C), dtype=np.int64)
     per = np.zeros(M, dtype=np.int64)
     N = 0
     for r in range(M):
-        _areas(code, P, r, area)
+        _areas(code, P, rows[r], area)
         for c in range(C):
             a = area[c]
             if a > 0.0:
@@ -497,7 +498,7 @@ def _draw_template(code, P, want, buf, density, lo, hi, feat, box_t, frustum_t, 
             t = 0
             for r in range(M):
                 for _ in range(n[r, 0]):
-                    Rs[t], rs[t] = P[r, 0], P[r, 1]
+                    Rs[t], rs[t] = P[rows[r], 0], P[rows[r], 1]
                     t += 1
             todo = np.arange(k)
             nt = k
@@ -530,7 +531,7 @@ def _draw_template(code, P, want, buf, density, lo, hi, feat, box_t, frustum_t, 
                 continue
             b = block[code, c]
             if want[r]:
-                _patch(code, c, P, r, box_t, frustum_t, ring_t, q)
+                _patch(code, c, P, rows[r], box_t, frustum_t, ring_t, q)
                 u0 = bpos[b] + seen[b]
                 for j in range(k):
                     if code == 5 and c == 0:
@@ -545,7 +546,80 @@ def _draw_template(code, P, want, buf, density, lo, hi, feat, box_t, frustum_t, 
             else:
                 o += k
             seen[b] += k
-    return _box_points(out, per, want, off, F, feat, P), per, 0
+    return _box_points(out, per, want, off, F, feat, P, rows), per, 0
 
 
 _C_OF = np.array(_C, dtype=np.int64)
+
+
+def require(pieces, idx: np.ndarray) -> list:
+    """Draw the samples of the pieces ``idx`` of ``pieces`` that have none yet, for the
+    templates of :data:`TEMPLATE_CODES` (:meth:`artipg.validate.shapes.Pieces.require`,
+    with the bookkeeping in the kernel). Returns the template indices left to draw
+    (other templates, meshes) and the mask of the pieces needed, or None when none are."""
+    need, kinds = _needed(np.asarray(idx, dtype=np.int64), pieces._drawn, pieces._kind, len(pieces._kinds))
+    if not len(kinds):
+        return None
+    rest = []
+    for k in kinds.tolist():
+        code = TEMPLATE_CODES.get(pieces._kinds[k], 0)
+        out = None
+        size = 4096
+        while code:
+            buf = _buffer(pieces._seed, k, size)
+            out, short = _require_kind(code, k, need, pieces._kind, pieces.params, buf, pieces.start, pieces.count,
+                                       pieces._drawn, pieces._size, DENSITY, MIN_PER_COMPONENT, MAX_PER_COMPONENT,
+                                       _BOX_FEATURES, _BOX_TABLE, _FRUSTUM_CAPS, _RING_CAPS, _BLOCK, _FAM)
+            if not short:
+                break
+            out = None
+            size = max(short, 2 * len(buf))
+            if size > _CAP:
+                break
+        if out is None:
+            rest.append(k)
+        else:
+            pieces._chunks.append(out)
+            pieces._size += out.shape[1]
+    return rest, need
+
+
+@numba.njit(cache=True)
+def _needed(idx, drawn, kind, K):
+    """The pieces of ``idx`` without samples (mask) and their templates (ascending)."""
+    need = np.zeros(len(drawn), dtype=np.bool_)
+    has = np.zeros(K, dtype=np.bool_)
+    for i in idx:
+        if not drawn[i]:
+            need[i] = True
+            has[kind[i]] = True
+    return need, np.nonzero(has)[0]
+
+
+@numba.njit(cache=True)
+def _require_kind(code, k, need, kind, params, buf, start, count, drawn, size, density, lo, hi, feat, box_t,
+                  frustum_t, ring_t, block, fam):
+    """Draw template ``k`` (code ``code``) for the needed pieces, record where their
+    samples start (after ``size`` samples drawn before) and how many: ``(points,
+    short)``."""
+    n = 0
+    for m in range(len(kind)):
+        n += kind[m] == k
+    rows = np.empty(n, dtype=np.int64)
+    want = np.empty(n, dtype=np.bool_)
+    n = 0
+    for m in range(len(kind)):
+        if kind[m] == k:
+            rows[n], want[n] = m, need[m]
+            n += 1
+    out, per, short = _draw_template(code, params, rows, want, buf, density, lo, hi, feat, box_t, frustum_t, ring_t,
+                                     block, fam)
+    if short:
+        return out, short
+    at = size
+    for i in range(n):
+        if want[i]:
+            m = rows[i]
+            start[m], count[m], drawn[m] = at, per[i], True
+            at += per[i]
+    return out, 0

@@ -192,12 +192,21 @@ class Pieces:
         once from that template's own stream; mesh pieces one by one, each from its
         own stream. The samples of a piece are thus the same whatever was drawn before.
         """
-        need = np.zeros(self.n, dtype=bool)
-        need[np.asarray(idx, dtype=np.int64)] = True
-        need &= ~self._drawn
-        if not need.any():
-            return
-        for k in np.bincount(self._kind[need], minlength=len(self._kinds)).nonzero()[0].tolist():
+        if compiled.ENABLED and self._compiled_draw():
+            from artipg.validate import jit_samples
+
+            left = jit_samples.require(self, idx)
+            if left is None or not left[0]:
+                return
+            kinds, need = left
+        else:
+            need = np.zeros(self.n, dtype=bool)
+            need[np.asarray(idx, dtype=np.int64)] = True
+            need &= ~self._drawn
+            if not need.any():
+                return
+            kinds = np.bincount(self._kind[need], minlength=len(self._kinds)).nonzero()[0].tolist()
+        for k in kinds:
             g = self._kinds[k]
             if g is None:
                 rows = (need & (self._kind == k)).nonzero()[0]
@@ -211,7 +220,7 @@ class Pieces:
                 want = None if want.all() else want
                 P = self.params[rows, :self._nparams[k]]
                 got = None
-                if compiled.ENABLED:
+                if compiled.ENABLED and self._compiled_draw():
                     from artipg.validate.jit_samples import draw_group
 
                     got = draw_group(g, P, self._seed, k, want)
@@ -227,6 +236,10 @@ class Pieces:
             self._drawn[rows] = True
             self._chunks.append(np.ascontiguousarray(p))  # (3, n)
             self._size += p.shape[1]
+
+    def _compiled_draw(self) -> bool:
+        """Whether the compiled sample draw applies (see :mod:`artipg.validate.jit_samples`)."""
+        return _kernels_match()
 
     def _stream(self, key: int) -> np.random.Generator:
         """The sample stream ``key`` (a template index, or a mesh piece's) of this object."""
@@ -309,6 +322,12 @@ class Pieces:
         """
         table = obj.primitive_table
         local = getattr(table, "local_boxes", None)  # the templates' bounds_batch, cached by generation
+        part_names = [p.name for p in obj.parts]
+        if compiled.ENABLED and local is not None and table.groups and _kernels_match():
+            from artipg.validate.jit_pieces import pieces_arrays
+
+            link, part, T, center, half, params, kinds = pieces_arrays(table, local)
+            return cls(link, part, T, center, half, None, params, part_names, obj.part_link, rng, kinds=kinds)
         index: dict = {}  # templates in order of appearance
         Ps, Ts, links, parts, boxes, kind = [], [], [], [], [], []
         for g in table.groups:
@@ -346,8 +365,15 @@ class Pieces:
         half = 0.5 * (b[:, 1] - b[:, 0])
         kinds = (list(index), np.repeat(*np.array(kind, dtype=np.int64).reshape(-1, 2).T))
         return cls(links[0] if one else np.concatenate(links), parts[0] if one else np.concatenate(parts),
-                   Ts[0] if one else np.concatenate(Ts), center, half, None, params,
-                   [p.name for p in obj.parts], obj.part_link, rng, kinds=kinds)
+                   Ts[0] if one else np.concatenate(Ts), center, half, None, params, part_names, obj.part_link, rng,
+                   kinds=kinds)
+
+
+def _kernels_match() -> bool:
+    """:func:`artipg.validate.jit_base.kernels_match` (imported on first use: numba)."""
+    from artipg.validate.jit_base import kernels_match
+
+    return kernels_match()
 
 
 #: Small codes of the templates that get per-template flags (0: any other, meshes).
