@@ -23,7 +23,7 @@ import numpy as np
 from artipg.geometry.box import Cuboid
 from artipg.geometry.prism import MAX_SIDES, Prism, TriPrism
 from artipg.geometry.revolve import Frustum, Ring, Sphere, Torus
-from artipg.validate.jit_base import apply, apply_t, clip01, vmax, vmin
+from artipg.validate.jit_base import apply, apply_t, clip01, kernels_match, vmax, vmin
 from artipg.validate.kinematics import rigid_inverse
 
 #: SDF codes of the templates the kernels evaluate (0: none of them: a mesh piece).
@@ -43,6 +43,9 @@ def piece_table(pieces) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     kinds = pieces._kinds
     code = np.array([SDF_CODES.get(g, 0) for g in kinds] + [0], dtype=np.int64)[pieces._kind]
     P = pieces.params
+    if kernels_match():  # the sines and cosines by the kernel: numpy's
+        aux, radial = _table_trig(code, P)
+        return code, aux, radial
     sn = cs = _NO_FLOAT
     if Ring in kinds or Torus in kinds:  # rowsdf.prepare_wedge
         arc = np.where(code == 3, P[:, min(3, P.shape[1] - 1)], P[:, 2])
@@ -60,6 +63,35 @@ def piece_table(pieces) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
 
 _NO_FLOAT = np.zeros(0)
 _NO_POLY = np.zeros((0, MAX_SIDES))
+
+
+@numba.njit(cache=True)
+def _table_trig(code, P):
+    """:func:`_table` with the sines and cosines computed here (see
+    :func:`artipg.validate.jit_base.kernels_match`)."""
+    M = len(code)
+    sn = np.zeros(M)
+    cs = np.zeros(M)
+    n_prism = 0
+    for m in range(M):
+        if code[m] == 3 or code[m] == 5:
+            arc = P[m, 3] if code[m] == 3 else P[m, 2]
+            sn[m], cs[m] = math.sin(arc), math.cos(arc)
+        n_prism += code[m] == 6
+    rows = np.empty(n_prism, dtype=np.int64)
+    px = np.empty((n_prism, _V))
+    py = np.empty((n_prism, _V))
+    i = 0
+    for m in range(M):
+        if code[m] == 6:  # rowsdf.prepare_prism
+            r, n = P[m, 0], P[m, 2]
+            rows[i] = m
+            for v in range(_V):
+                k = vmin(float(v), n - 1)
+                a = np.pi / n + 2 * np.pi * k / n
+                px[i, v], py[i, v] = r * math.cos(a), r * math.sin(a)
+            i += 1
+    return _table(code, P, sn, cs, rows, px, py)
 
 
 @numba.njit(cache=True)
@@ -171,13 +203,15 @@ def _pair_distance(a, b, Wa, Wb, margin, box, ball, other, src, tgt, rel, keep, 
     # evaluate(): the samples of each kept job near the target's box, then (with many
     # of them) near its radial extent
     near = 0
-    for j in range(2 * n):
-        if keep[j]:
+    for j in range(2 * n):  # (only whether there are more than _RADIAL_CULL)
+        if keep[j] and near <= _RADIAL_CULL:
             s, t = src[j], tgt[j]
             mj = margin[other[j % n]]
             for p in range(start[s], start[s] + count[s]):
                 if _near_box(rel[j], pts[0, p], pts[1, p], pts[2, p], center[t], half[t], mj):
                     near += 1
+                    if near > _RADIAL_CULL:
+                        break
     radial_cull = near > _RADIAL_CULL
     d = np.full(2 * n, np.inf)
     for j in range(2 * n):

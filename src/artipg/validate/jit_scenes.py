@@ -33,7 +33,7 @@ def scenes(kin, pieces, tol, overlap: float):
     with their distances ``"d"``: ``(W0, c0, h0, [rest, sweep, open...])``."""
     fracs = np.asarray(tol.open_fractions, dtype=float) if len(kin.movable()) >= 2 else np.zeros(0)
     (W0, c0, h0, a, b, Wa, Wb, margin, sizes, sw_scene, sw_joint, sw_q, box, ball, other, src, tgt, rel,
-     keep) = build(kin.parent, kin.origin, kin.type_codes, kin.axis, kin.limits, kin.movable(), kin.descendants, pieces.link,
+     keep) = build(kin.parent, kin.origin, kin.type_codes, kin.axis, kin.limits, kin.movable(), pieces.link,
                    pieces.part, pieces.T, pieces.center, pieces.half, pieces.symmetric, pieces.is_box, pieces.is_ball,
                    float(tol.floating), int(tol.sweep_poses), fracs, float(overlap))
     if pieces.jit_table is not None:
@@ -106,11 +106,25 @@ def _posed(P, link, T, center, half):
 
 
 @numba.njit(cache=True)
-def build(parent, origin, jtype, axis, limits, movable, desc, link, part, T, center, half, symmetric, is_box, is_ball,
+def descendants(parent):
+    """:attr:`artipg.validate.kinematics.Kinematics.descendants` (L, L) bool."""
+    L = len(parent)
+    desc = np.zeros((L, L), dtype=np.bool_)
+    for k in range(L):
+        a = k
+        while a >= 0:
+            desc[a, k] = True
+            a = parent[a]
+    return desc
+
+
+@numba.njit(cache=True)
+def build(parent, origin, jtype, axis, limits, movable, link, part, T, center, half, symmetric, is_box, is_ball,
           floating, n_poses, fracs, overlap):
     """Every scene's pairs, concatenated (rest, sweep, open per fraction), with what
     :func:`artipg.validate.jit_contacts._pair_distance` needs."""
     L, M, J = len(parent), len(link), len(movable)
+    desc = descendants(parent)
     rest = _poses(parent, origin, jtype, axis, np.zeros(L))
     W0, c0, h0 = _posed(rest, link, T, center, half)
     ra, rb = close_pairs(c0, h0, floating, part)

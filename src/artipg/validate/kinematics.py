@@ -55,18 +55,13 @@ class Kinematics:
         """The tree of an :class:`artipg.model.ArticulatedObject`."""
         idx = obj.link_index
         L = len(obj.links)
-        parent = np.full(L, -1, dtype=np.int64)
-        origin = np.tile(_I4, (L, 1, 1))
-        axis = np.zeros((L, 3))
-        limits = np.zeros((L, 2))
-        jn, jt = [""] * L, ["fixed"] * L
-        for i, link in enumerate(obj.links[1:], start=1):
-            j = link.joint
-            parent[i] = idx[j.parent]
-            origin[i] = j.origin
-            axis[i] = j.axis
-            limits[i] = j.limits
-            jn[i], jt[i] = j.name, j.type
+        joints = [lk.joint for lk in obj.links[1:]]
+        parent = np.array([-1] + [idx[j.parent] for j in joints], dtype=np.int64)
+        origin = np.concatenate([_I4] + [np.asarray(j.origin, dtype=float) for j in joints]).reshape(L, 4, 4)
+        axis = np.array([(0.0, 0.0, 0.0)] + [j.axis for j in joints], dtype=float).reshape(L, 3)
+        limits = np.array([(0.0, 0.0)] + [j.limits for j in joints], dtype=float).reshape(L, 2)
+        jn = [""] + [j.name for j in joints]
+        jt = ["fixed"] + [j.type for j in joints]
         return cls([lk.name for lk in obj.links], parent, jn, jt, origin, axis, limits)
 
     @property
