@@ -170,15 +170,7 @@ def _sweep_pairs(kin, pieces, rest, W0, c0, h0, tol) -> dict:
     p_idx = up.repeat(counts)
     GR, Gt = _world_motions(kin, axes, scene_joint, scene_q)  # (S, 3, 3), (S, 3)
     GR, Gt = GR[s_idx], Gt[s_idx]  # every row's
-    # boxes of the moving pieces at every pose: centre G c0, axes G R0
-    R0 = W0[p_idx, :3, :3]
-    Rm = (GR[:, :, 0, None] * R0[:, 0, None, :] + GR[:, :, 1, None] * R0[:, 1, None, :]
-          + GR[:, :, 2, None] * R0[:, 2, None, :])
-    c = c0[p_idx]
-    cm = GR[:, :, 0] * c[:, 0, None] + GR[:, :, 1] * c[:, 1, None] + GR[:, :, 2] * c[:, 2, None] + Gt
-    hp = pieces.half[p_idx]
-    Am = np.abs(Rm)
-    hm = Am[:, :, 0] * hp[:, 0, None] + Am[:, :, 1] * hp[:, 1, None] + Am[:, :, 2] * hp[:, 2, None]
+    Rm, cm, hm = _moved_boxes(GR, Gt, W0[p_idx], c0[p_idx], pieces.half[p_idx])
     # swept box of each (joint, moving piece) over all its poses
     lo = np.minimum.reduceat(cm - hm, starts)
     hi = np.maximum.reduceat(cm + hm, starts)
@@ -200,6 +192,19 @@ def _sweep_pairs(kin, pieces, rest, W0, c0, h0, tol) -> dict:
     Wm[:, 3, 3] = 1.0
     out.update(a=p_idx[rows], b=bb, Wa=Wm, Wb=W0[bb], scene=s_idx[rows])
     return out
+
+
+def _moved_boxes(GR, Gt, W, c, h):
+    """Pieces (frames ``W`` (n, 4, 4), world boxes ``c``, local half extents ``h``)
+    moved by rotations ``GR`` (n, 3, 3) and translations ``Gt`` (n, 3): the rotation
+    of each moved frame (n, 3, 3) and its world box (centres, half extents: (n, 3))."""
+    R0 = W[:, :3, :3]
+    Rm = (GR[:, :, 0, None] * R0[:, 0, None, :] + GR[:, :, 1, None] * R0[:, 1, None, :]
+          + GR[:, :, 2, None] * R0[:, 2, None, :])
+    cm = GR[:, :, 0] * c[:, 0, None] + GR[:, :, 1] * c[:, 1, None] + GR[:, :, 2] * c[:, 2, None] + Gt
+    Am = np.abs(Rm)
+    hm = Am[:, :, 0] * h[:, 0, None] + Am[:, :, 1] * h[:, 1, None] + Am[:, :, 2] * h[:, 2, None]
+    return Rm, cm, hm
 
 
 def _world_motions(kin, axes, joint, q):

@@ -14,17 +14,43 @@ against the kernels' versions before any kernel that relies on them runs:
 
 Where a probe fails, the checks run the numpy code instead (slower, same results).
 
+numba invalidates a kernel's disk cache only when the file defining it changes, not
+when a function it calls from another module does: every kernel module passes the
+modules its kernels use to :func:`drop_stale_caches` when imported.
+
 This module imports numba: import it lazily (``import artipg`` stays light).
 """
 
 from __future__ import annotations
 
 import math
+import os
 
 import numba
 import numpy as np
 from numba import types
 from numba.extending import intrinsic
+
+
+def drop_stale_caches(module_file: str, deps: list) -> None:
+    """Remove the numba cache indexes of the kernels of ``module_file`` (in its
+    ``__pycache__``) that are older than one of the modules ``deps`` (their files)
+    whose functions or constants they compiled in: numba then compiles them again."""
+    folder = os.path.join(os.path.dirname(module_file), "__pycache__")
+    try:
+        names = os.listdir(folder)
+    except OSError:
+        return
+    newest = max(os.stat(d).st_mtime for d in deps)
+    stem = os.path.splitext(os.path.basename(module_file))[0] + "."
+    for name in names:
+        if name.startswith(stem) and name.endswith(".nbi"):
+            path = os.path.join(folder, name)
+            try:
+                if os.stat(path).st_mtime < newest:
+                    os.remove(path)
+            except OSError:  # another process got there first
+                pass
 
 
 @intrinsic
@@ -48,8 +74,9 @@ def set_identity(out):
 
 @numba.njit(cache=True, inline="always")
 def mm_entry(A, B, i, j):
-    """Entry (i, j) of ``A @ B`` for (4, 4) frames, as this machine's BLAS computes it."""
-    s = A[i, 0] * B[0, j]
+    """Entry (i, j) of ``A @ B`` for (4, 4) frames, as this machine's BLAS computes it
+    (a zero accumulator, then one fused multiply-add per term)."""
+    s = fma(A[i, 0], B[0, j], 0.0)
     s = fma(A[i, 1], B[1, j], s)
     s = fma(A[i, 2], B[2, j], s)
     return fma(A[i, 3], B[3, j], s)
@@ -77,14 +104,15 @@ def rigid_inverse(T, out):
 @numba.njit(cache=True, inline="always")
 def apply(W, x0, x1, x2, i):
     """Row i of ``np.einsum("nij,nj->ni", W[:, :3, :3], x)`` for one row, in the order
-    numpy sums it (terms 0 and 2 first)."""
-    return W[i, 0] * x0 + W[i, 2] * x2 + W[i, 1] * x1
+    numpy sums it (from zero, terms 0 and 2 first)."""
+    return 0.0 + W[i, 0] * x0 + W[i, 2] * x2 + W[i, 1] * x1
 
 
 @numba.njit(cache=True, inline="always")
 def apply_t(W, x0, x1, x2, i):
-    """Row i of ``np.einsum("nji,nj->ni", W[:, :3, :3], x)`` for one row (in order)."""
-    return W[0, i] * x0 + W[1, i] * x1 + W[2, i] * x2
+    """Row i of ``np.einsum("nji,nj->ni", W[:, :3, :3], x)`` for one row (from zero,
+    in order)."""
+    return 0.0 + W[0, i] * x0 + W[1, i] * x1 + W[2, i] * x2
 
 
 @numba.njit(cache=True, inline="always")
@@ -138,12 +166,16 @@ def kernels_match() -> bool:
         A = rng.normal(size=(256, 4, 4)) * np.array([1.0, 1e3, 1e-3, 7.0])
         B = rng.normal(size=(256, 4, 4))
         x = rng.normal(size=(256, 3)) * np.array([1.0, 1e3, 1e-3])
+        # and entries of few values with (signed) zeros: the order and the start of sums show
+        zeros = rng.random((3, 256, 4, 4)) < 0.5
+        values = np.array([0.0, -0.0, 1.0, -1.0, 0.5, -2.0])
+        A = np.concatenate([A, values[rng.integers(0, 6, (256, 4, 4))] * zeros[0]])
+        B = np.concatenate([B, values[rng.integers(0, 6, (256, 4, 4))] * zeros[1]])
+        x = np.concatenate([x, values[rng.integers(0, 6, (256, 3))] * zeros[2, :, 0, :3]])
         q = np.concatenate([rng.random(512) * 2 * np.pi, rng.normal(size=256) * 30.0])
         prod, inv, ein, trig = _probe(A, B, x, q)
-        _MATCH.append(bool(np.array_equal(prod, A @ B) and np.array_equal(prod[:1], A[0] @ B[:1])
-                           and np.array_equal(prod[0], A[0] @ B[0]) and np.array_equal(inv, rigid_inverse_np(A))
-                           and np.array_equal(ein[0], np.einsum("nij,nj->ni", A[:, :3, :3], x))
-                           and np.array_equal(ein[1], np.einsum("nji,nj->ni", A[:, :3, :3], x))
-                           and np.array_equal(trig[0], np.cos(q)) and np.array_equal(trig[1], np.sin(q))
-                           and np.array_equal(trig[2], np.hypot(q, q[::-1]))))
+        same = [(prod, A @ B), (prod[:1], A[0] @ B[:1]), (prod[300], A[300] @ B[300]), (inv, rigid_inverse_np(A)),
+                (ein[0], np.einsum("nij,nj->ni", A[:, :3, :3], x)), (ein[1], np.einsum("nji,nj->ni", A[:, :3, :3], x)),
+                (trig[0], np.cos(q)), (trig[1], np.sin(q)), (trig[2], np.hypot(q, q[::-1]))]
+        _MATCH.append(all(a.tobytes() == np.ascontiguousarray(b).tobytes() for a, b in same))
     return _MATCH[0]

@@ -16,6 +16,7 @@ This module imports numba: import it lazily (``import artipg`` stays light).
 from __future__ import annotations
 
 import math
+import sys
 
 import numba
 import numpy as np
@@ -25,6 +26,9 @@ from artipg.geometry.prism import MAX_SIDES, Prism, TriPrism
 from artipg.geometry.revolve import Frustum, Ring, Sphere, Torus
 from artipg.validate.jit_base import apply, apply_t, clip01, kernels_match, vmax, vmin
 from artipg.validate.kinematics import rigid_inverse
+from artipg.validate import jit_base
+
+jit_base.drop_stale_caches(__file__, [jit_base.__file__, sys.modules[Prism.__module__].__file__])
 
 #: SDF codes of the templates the kernels evaluate (0: none of them: a mesh piece).
 SDF_CODES = {Cuboid: 1, Frustum: 2, Ring: 3, Sphere: 4, Torus: 5, Prism: 6, TriPrism: 7}
@@ -139,7 +143,6 @@ def _table(code, P, sn, cs, prism_rows, px, py):
 def pair_distance(pieces, a, b, Wa, Wb, margin: np.ndarray) -> np.ndarray:
     """:func:`artipg.validate.contacts.pair_distance` (``margin`` (K,)), compiled; the
     pieces must all have SDF codes (see :attr:`artipg.validate.shapes.Pieces.jit_table`)."""
-    K = len(a)
     code, aux, radial = pieces.jit_table
     box = pieces.is_box[a] & pieces.is_box[b]
     ball = pieces.is_ball[a] & pieces.is_ball[b]

@@ -20,6 +20,10 @@ import numba
 import numpy as np
 
 from artipg.validate.kinematics import _SKEW, _SKEW_SIGN
+from artipg.validate import kinematics
+from artipg.validate.jit_base import drop_stale_caches
+
+drop_stale_caches(__file__, [kinematics.__file__])
 
 
 @numba.njit(cache=True)
@@ -71,9 +75,9 @@ def turns_in_place(axis, point, slides, symmetric, W0):
             zx, zy, zz = W0[m, 0, 2], W0[m, 1, 2], W0[m, 2, 2]
             cross = max(max(abs(zy * az - zz * ay), abs(zz * ax - zx * az)), abs(zx * ay - zy * ax))
             d0, d1, d2 = W0[m, 0, 3] - point[j, 0], W0[m, 1, 3] - point[j, 1], W0[m, 2, 3] - point[j, 2]
-            da = d0 * ax + d1 * ay + d2 * az
+            da = 0.0 + d0 * ax + d1 * ay + d2 * az  # (.sum(): from zero)
             r0, r1, r2 = d0 - da * ax, d1 - da * ay, d2 - da * az
-            out[j, m] = cross < 1e-9 and np.sqrt(r0 * r0 + r1 * r1 + r2 * r2) < 1e-9
+            out[j, m] = cross < 1e-9 and np.sqrt(0.0 + r0 * r0 + r1 * r1 + r2 * r2) < 1e-9
     return out
 
 
@@ -99,25 +103,7 @@ def sweep_pairs(moving, subtree, scene_joint, scene_q, cos_q, sin_q, slides, axi
     """
     J, M = moving.shape
     S = len(scene_joint)
-    # the rigid motion of every scene (checks._world_motions; kinematics.rotations)
-    GR = np.empty((S, 3, 3))
-    Gt = np.empty((S, 3))
-    for s in range(S):
-        j = scene_joint[s]
-        c, sn = cos_q[s], sin_q[s]
-        a0, a1, a2 = axis[j, 0], axis[j, 1], axis[j, 2]
-        a4 = (a0, a1, a2, 0.0)
-        for i in range(3):
-            for k in range(3):
-                GR[s, i, k] = (axis[j, i] * axis[j, k]) * (1.0 - c) + a4[_SKEW[i, k]] * _SKEW_SIGN[i, k] * sn
-            GR[s, i, i] += c
-        q = scene_q[s]
-        for i in range(3):
-            if slides[j]:
-                Gt[s, i] = q * axis[j, i]
-            else:
-                Gt[s, i] = point[j, i] - (GR[s, i, 0] * point[j, 0] + GR[s, i, 1] * point[j, 1]
-                                          + GR[s, i, 2] * point[j, 2])
+    GR, Gt = world_motions(scene_joint, scene_q, cos_q, sin_q, slides, axis, point)
     n_pose = np.zeros(J, dtype=np.int64)
     for s in range(S):
         n_pose[scene_joint[s]] += 1
@@ -141,23 +127,20 @@ def sweep_pairs(moving, subtree, scene_joint, scene_q, cos_q, sin_q, slides, axi
                 uj[u], up[u], ustart[u] = j, m, n_rows
                 n_rows += n_pose[j]
                 u += 1
-    Rm = np.empty((n_rows, 3, 3))
-    cm = np.empty((n_rows, 3))
-    hm = np.empty((n_rows, 3))
+    s_idx = np.empty(n_rows, dtype=np.int64)
+    p_idx = np.empty(n_rows, dtype=np.int64)
+    for u in range(U):
+        for k in range(n_pose[uj[u]]):
+            s_idx[ustart[u] + k], p_idx[ustart[u] + k] = first[uj[u]] + k, up[u]
+    Rm, cm, hm = moved_boxes(GR, Gt, W0, c0, half, s_idx, p_idx)
     sw_c = np.empty((U, 3))
     sw_h = np.empty((U, 3))
     for u in range(U):
-        j, p = uj[u], up[u]
         lo = np.full(3, np.inf)
         hi = np.full(3, -np.inf)
-        for k in range(n_pose[j]):
-            s, r = first[j] + k, ustart[u] + k
+        for k in range(n_pose[uj[u]]):
+            r = ustart[u] + k
             for i in range(3):
-                for l in range(3):
-                    Rm[r, i, l] = GR[s, i, 0] * W0[p, 0, l] + GR[s, i, 1] * W0[p, 1, l] + GR[s, i, 2] * W0[p, 2, l]
-                cm[r, i] = GR[s, i, 0] * c0[p, 0] + GR[s, i, 1] * c0[p, 1] + GR[s, i, 2] * c0[p, 2] + Gt[s, i]
-            for i in range(3):
-                hm[r, i] = abs(Rm[r, i, 0]) * half[p, 0] + abs(Rm[r, i, 1]) * half[p, 1] + abs(Rm[r, i, 2]) * half[p, 2]
                 lo[i] = min(lo[i], cm[r, i] - hm[r, i])
                 hi[i] = max(hi[i], cm[r, i] + hm[r, i])
         for i in range(3):
@@ -200,6 +183,50 @@ def sweep_pairs(moving, subtree, scene_joint, scene_q, cos_q, sin_q, slides, axi
                 Wb[n] = W0[b]
                 n += 1
     return a_out, b_out, Wa, Wb, s_out
+
+
+@numba.njit(cache=True)
+def world_motions(scene_joint, scene_q, cos_q, sin_q, slides, axis, point):
+    """:func:`artipg.validate.checks._world_motions`: the rotation (S, 3, 3) and
+    translation (S, 3) of every scene, from the cosine and sine of its turn."""
+    S = len(scene_joint)
+    GR = np.empty((S, 3, 3))
+    Gt = np.empty((S, 3))
+    for s in range(S):
+        j = scene_joint[s]
+        c, sn = cos_q[s], sin_q[s]
+        a4 = (axis[j, 0], axis[j, 1], axis[j, 2], 0.0)
+        for i in range(3):  # kinematics.rotations
+            for k in range(3):
+                GR[s, i, k] = (axis[j, i] * axis[j, k]) * (1.0 - c) + a4[_SKEW[i, k]] * _SKEW_SIGN[i, k] * sn
+            GR[s, i, i] += c
+        q = scene_q[s]
+        for i in range(3):
+            if slides[j]:
+                Gt[s, i] = q * axis[j, i]
+            else:
+                Gt[s, i] = point[j, i] - (GR[s, i, 0] * point[j, 0] + GR[s, i, 1] * point[j, 1]
+                                          + GR[s, i, 2] * point[j, 2])
+    return GR, Gt
+
+
+@numba.njit(cache=True)
+def moved_boxes(GR, Gt, W0, c0, half, s_idx, p_idx):
+    """:func:`artipg.validate.checks._moved_boxes` of pieces ``p_idx`` moved by the
+    motions ``s_idx`` (rows of ``GR``, ``Gt``)."""
+    n = len(s_idx)
+    Rm = np.empty((n, 3, 3))
+    cm = np.empty((n, 3))
+    hm = np.empty((n, 3))
+    for r in range(n):
+        s, p = s_idx[r], p_idx[r]
+        for i in range(3):
+            for l in range(3):
+                Rm[r, i, l] = GR[s, i, 0] * W0[p, 0, l] + GR[s, i, 1] * W0[p, 1, l] + GR[s, i, 2] * W0[p, 2, l]
+            cm[r, i] = GR[s, i, 0] * c0[p, 0] + GR[s, i, 1] * c0[p, 1] + GR[s, i, 2] * c0[p, 2] + Gt[s, i]
+        for i in range(3):
+            hm[r, i] = abs(Rm[r, i, 0]) * half[p, 0] + abs(Rm[r, i, 1]) * half[p, 1] + abs(Rm[r, i, 2]) * half[p, 2]
+    return Rm, cm, hm
 
 
 @numba.njit(cache=True, inline="always")

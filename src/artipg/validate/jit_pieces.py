@@ -16,6 +16,9 @@ import numpy as np
 
 from artipg.geometry.box import Cuboid, RectRing
 from artipg.validate.jit_base import apply
+from artipg.validate import jit_base
+
+jit_base.drop_stale_caches(__file__, [jit_base.__file__])
 
 
 def pieces_arrays(table, local):

@@ -23,6 +23,9 @@ from artipg.geometry.revolve import _FRUSTUM_CAPS, _RING_CAPS, Frustum, Ring, Sp
 from artipg.validate.jit_base import fma, kernels_match, vmax
 from artipg.validate.shapes import _BOX_FEATURES, DENSITY, MAX_PER_COMPONENT, MIN_PER_COMPONENT, _layout
 from artipg.validate.streams import _CAP, _buffer
+from artipg.validate import jit_base
+
+jit_base.drop_stale_caches(__file__, [jit_base.__file__])
 
 _TWO_PI = 2.0 * np.pi
 _TORUS = 5  # family code (shapes._FAMILY_CODES)
@@ -355,8 +358,8 @@ def _linear(table, patch, j, P, r):
     """Parameter j of patch ``patch`` of row r by a :func:`artipg.geometry.patches.linear`
     table (c, p, q + 1): ``A @ P.T + b`` as numpy (BLAS) computes it."""
     q = table.shape[2] - 1
-    s = table[patch, j, 0] * P[r, 0]
-    for k in range(1, q):
+    s = 0.0
+    for k in range(q):
         s = fma(table[patch, j, k], P[r, k], s)
     return s + table[patch, j, q]
 
@@ -623,3 +626,33 @@ def _require_kind(code, k, need, kind, params, buf, start, count, drawn, size, d
             start[m], count[m], drawn[m] = at, per[i], True
             at += per[i]
     return out, 0
+
+
+def template_areas(geom, P: np.ndarray) -> np.ndarray:
+    """``geom.component_areas(P)`` as the kernel of :func:`draw_template` computes it."""
+    return _template_areas(TEMPLATE_CODES[geom], np.ascontiguousarray(P, dtype=float))
+
+
+def template_patch(geom, P: np.ndarray, comp: int) -> np.ndarray:
+    """The parameters (M, 15) of component ``comp``'s patch of every row of ``P`` (the
+    family's rows, zero-padded), as the kernel of :func:`draw_template` computes them."""
+    return _template_patch(TEMPLATE_CODES[geom], np.ascontiguousarray(P, dtype=float), comp, _BOX_TABLE,
+                           _FRUSTUM_CAPS, _RING_CAPS)
+
+
+@numba.njit(cache=True)
+def _template_areas(code, P):
+    out = np.zeros((len(P), _C_OF[code]))
+    area = np.empty(6)
+    for r in range(len(P)):
+        _areas(code, P, r, area)
+        out[r] = area[:_C_OF[code]]
+    return out
+
+
+@numba.njit(cache=True)
+def _template_patch(code, P, comp, box_t, frustum_t, ring_t):
+    out = np.empty((len(P), 15))
+    for r in range(len(P)):
+        _patch(code, comp, P, r, box_t, frustum_t, ring_t, out[r])
+    return out

@@ -26,6 +26,9 @@ import numpy as np
 from artipg.validate.jit_base import matmul4, rigid_inverse, set_identity
 from artipg.validate.jit_pairs import _overlap, close_pairs, sweep_pairs, turns_in_place
 from artipg.validate.kinematics import _SKEW, _SKEW_SIGN
+from artipg.validate import jit_base, jit_pairs, kinematics
+
+jit_base.drop_stale_caches(__file__, [jit_base.__file__, jit_pairs.__file__, kinematics.__file__])
 
 
 def scenes(kin, pieces, tol, overlap: float):
