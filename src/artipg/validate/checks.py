@@ -102,6 +102,7 @@ def run_checks(kin: Kinematics, pieces: Pieces, tol: Tolerances = Tolerances()) 
 
 
 def _kernels_match() -> bool:
+    """:func:`artipg.validate.jit_base.kernels_match` (imported on first use: numba)."""
     from artipg.validate.jit_base import kernels_match
 
     return kernels_match()

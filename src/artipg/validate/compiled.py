@@ -1,10 +1,15 @@
 """Whether the geometric checks run their compiled (numba) kernels.
 
-The kernels (:mod:`artipg.validate.jit_samples` and the other ``jit_*`` modules)
-reproduce the numpy code they stand in for bit for bit; that code stays the
-definition and the fallback. ``ENABLED = False`` (or the environment variable
+The kernels (the ``jit_*`` modules of :mod:`artipg.validate`) reproduce the numpy
+code they stand in for bit for bit; that code stays the definition and the fallback.
+They run where :func:`artipg.validate.jit_base.kernels_match` finds numpy's matrix
+products, einsum orders and math library to be the kernels' on this machine, and
+``ENABLED`` is True. ``ENABLED = False`` (or the environment variable
 ``ARTIPG_NUMBA=0``) runs the plain numpy code everywhere, e.g. to compare both.
-Kernels are compiled on first use and cached on disk by numba.
+
+The first check in a process imports numba and loads the kernels from numba's disk
+cache (``__pycache__`` next to the modules; compiled there on first use): about a
+second, once per process.
 """
 
 from __future__ import annotations

@@ -58,7 +58,8 @@ class Pieces:
     center, half : (M, 3) float64
         Local axis-aligned bounding box (centre and half extents), piece frame.
     geom : list
-        Geometry template of every piece, or None for a mesh piece.
+        Geometry template of every piece, or None for a mesh piece (unused with
+        ``kinds``).
     params : (M, p) float64
         Parameters of primitive pieces (zero-padded).
     part_names : list of str
@@ -70,6 +71,9 @@ class Pieces:
         that number, see :func:`stream_seed`).
     meshes : dict, optional
         Piece index -> ``trimesh.Trimesh`` (piece frame) for mesh pieces.
+    kinds : tuple, optional
+        The templates in order of first appearance and each piece's index into them
+        ((M,) int64), instead of ``geom``.
     """
 
     def __init__(self, link, part, T, center, half, geom, params, part_names, part_link, rng, meshes=None, *,
@@ -158,7 +162,7 @@ class Pieces:
         compiled kernels (:func:`artipg.validate.jit_contacts.piece_table`), or None
         where a piece has no compiled SDF (a mesh) or the kernels are off
         (:mod:`artipg.validate.compiled`)."""
-        if not compiled.ENABLED or any(g is None for g in self._kinds):
+        if not compiled.ENABLED or any(g is None for g in self._kinds) or not _kernels_match():
             return None
         from artipg.validate.jit_contacts import SDF_CODES, piece_table
 
@@ -192,7 +196,7 @@ class Pieces:
         once from that template's own stream; mesh pieces one by one, each from its
         own stream. The samples of a piece are thus the same whatever was drawn before.
         """
-        if compiled.ENABLED and self._compiled_draw():
+        if compiled.ENABLED and _kernels_match():
             from artipg.validate import jit_samples
 
             left = jit_samples.require(self, idx)
@@ -220,7 +224,7 @@ class Pieces:
                 want = None if want.all() else want
                 P = self.params[rows, :self._nparams[k]]
                 got = None
-                if compiled.ENABLED and self._compiled_draw():
+                if compiled.ENABLED and _kernels_match():
                     from artipg.validate.jit_samples import draw_group
 
                     got = draw_group(g, P, self._seed, k, want)
@@ -236,10 +240,6 @@ class Pieces:
             self._drawn[rows] = True
             self._chunks.append(np.ascontiguousarray(p))  # (3, n)
             self._size += p.shape[1]
-
-    def _compiled_draw(self) -> bool:
-        """Whether the compiled sample draw applies (see :mod:`artipg.validate.jit_samples`)."""
-        return _kernels_match()
 
     def _stream(self, key: int) -> np.random.Generator:
         """The sample stream ``key`` (a template index, or a mesh piece's) of this object."""
@@ -363,7 +363,7 @@ class Pieces:
             b = np.concatenate(boxes)
         center = 0.5 * (b[:, 0] + b[:, 1])
         half = 0.5 * (b[:, 1] - b[:, 0])
-        kinds = (list(index), np.repeat(*np.array(kind, dtype=np.int64).reshape(-1, 2).T))
+        kinds = (list(index), np.repeat([k for k, _ in kind], [n for _, n in kind]).astype(np.int64))
         return cls(links[0] if one else np.concatenate(links), parts[0] if one else np.concatenate(parts),
                    Ts[0] if one else np.concatenate(Ts), center, half, None, params, part_names, obj.part_link, rng,
                    kinds=kinds)
