@@ -64,7 +64,15 @@ def fma(typingctx, a, b, c):
     return sig, codegen
 
 
-@numba.njit(cache=True, inline="always")
+@numba.njit(cache=True)
+def copy4(src, out):
+    """``out[:] = src`` for (4, 4) frames (a loop: cheaper to compile than a slice)."""
+    for i in range(4):
+        for j in range(4):
+            out[i, j] = src[i, j]
+
+
+@numba.njit(cache=True)
 def set_identity(out):
     """``out[:] = np.eye(4)``."""
     for i in range(4):
@@ -72,7 +80,7 @@ def set_identity(out):
             out[i, j] = 1.0 if i == j else 0.0
 
 
-@numba.njit(cache=True, inline="always")
+@numba.njit(cache=True)
 def mm_entry(A, B, i, j):
     """Entry (i, j) of ``A @ B`` for (4, 4) frames, as this machine's BLAS computes it
     (a zero accumulator, then one fused multiply-add per term)."""
@@ -82,7 +90,7 @@ def mm_entry(A, B, i, j):
     return fma(A[i, 3], B[3, j], s)
 
 
-@numba.njit(cache=True, inline="always")
+@numba.njit(cache=True)
 def matmul4(A, B, out):
     """``out[:] = A @ B`` for (4, 4) frames (see :func:`mm_entry`)."""
     for i in range(4):
@@ -90,7 +98,7 @@ def matmul4(A, B, out):
             out[i, j] = mm_entry(A, B, i, j)
 
 
-@numba.njit(cache=True, inline="always")
+@numba.njit(cache=True)
 def rigid_inverse(T, out):
     """``out[:] =`` :func:`artipg.validate.kinematics.rigid_inverse` of one frame."""
     for i in range(3):
@@ -101,33 +109,33 @@ def rigid_inverse(T, out):
     out[3, 3] = 1.0
 
 
-@numba.njit(cache=True, inline="always")
+@numba.njit(cache=True)
 def apply(W, x0, x1, x2, i):
     """Row i of ``np.einsum("nij,nj->ni", W[:, :3, :3], x)`` for one row, in the order
     numpy sums it (from zero, terms 0 and 2 first)."""
     return 0.0 + W[i, 0] * x0 + W[i, 2] * x2 + W[i, 1] * x1
 
 
-@numba.njit(cache=True, inline="always")
+@numba.njit(cache=True)
 def apply_t(W, x0, x1, x2, i):
     """Row i of ``np.einsum("nji,nj->ni", W[:, :3, :3], x)`` for one row (from zero,
     in order)."""
     return 0.0 + W[0, i] * x0 + W[1, i] * x1 + W[2, i] * x2
 
 
-@numba.njit(cache=True, inline="always")
+@numba.njit(cache=True)
 def vmax(a, b):
     """``np.maximum`` of two numbers (not NaN)."""
     return a if a > b else b
 
 
-@numba.njit(cache=True, inline="always")
+@numba.njit(cache=True)
 def vmin(a, b):
     """``np.minimum`` of two numbers (not NaN)."""
     return a if a < b else b
 
 
-@numba.njit(cache=True, inline="always")
+@numba.njit(cache=True)
 def clip01(x):
     """``np.clip(x, 0.0, 1.0)``."""
     return 0.0 if x < 0.0 else (1.0 if x > 1.0 else x)

@@ -245,7 +245,7 @@ def _pair_distance(a, b, Wa, Wb, margin, box, ball, other, src, tgt, rel, keep, 
     return out
 
 
-@numba.njit(cache=True, inline="always")
+@numba.njit(cache=True)
 def _near_box(R, x, y, z, ct, ht, m):
     """The point (x, y, z), moved by ``R`` (4, 4), lies within ``m`` of the box
     ``ct``, ``ht`` on every axis (:func:`artipg.validate.contacts.evaluate`)."""
@@ -279,7 +279,7 @@ def sdf(code, p, aux, x, y, z):
     return vmax(_polygon(x, y, aux), abs(z) - p[3] / 2)  # tri prism
 
 
-@numba.njit(cache=True, inline="always")
+@numba.njit(cache=True)
 def _cuboid(sx, sy, sz, x, y, z):
     qx, qy, qz = abs(x) - sx, abs(y) - sy, abs(z) - sz
     ox, oy, oz = vmax(qx, 0.0), vmax(qy, 0.0), vmax(qz, 0.0)
@@ -312,7 +312,7 @@ def _polygon(qx, qy, aux):
     return -dist if crossings % 2 == 1 else dist
 
 
-@numba.njit(cache=True, inline="always")
+@numba.njit(cache=True)
 def _wedge(x, y, arc, aux):
     """:func:`artipg.validate.rowsdf.prepare_wedge` at one point."""
     if arc >= 2.0 * np.pi - 1e-9:
@@ -502,10 +502,10 @@ def _refine(a, b, Wa, Wb, starts, iters, stop_below, params, code, aux, pts, sta
             y0, y1, y2 = X[k, 0] - Wt[0, 3], X[k, 1] - Wt[1, 3], X[k, 2] - Wt[2, 3]
             d[k] = sdf(code[t], params[t], aux[t], apply_t(Wt, y0, y1, y2, 0), apply_t(Wt, y0, y1, y2, 1),
                        apply_t(Wt, y0, y1, y2, 2))
-        order = np.argsort(d, kind="mergesort")  # stable: ties keep the sample order
+        taken = np.zeros(c, dtype=np.bool_)
         for r in range(first[j + 1] - first[j]):
-            k = order[r]
-            P[first[j] + r] = X[k]
+            k = _next_nearest(d, taken)
+            P[first[j] + r, 0], P[first[j] + r, 1], P[first[j] + r, 2] = X[k, 0], X[k, 1], X[k, 2]
             job[first[j] + r] = j
             if d[k] < best[j]:
                 best[j] = d[k]
@@ -552,6 +552,20 @@ def _refine(a, b, Wa, Wb, starts, iters, stop_below, params, code, aux, pts, sta
 
 
 @numba.njit(cache=True)
+def _next_nearest(d, taken):
+    """The smallest ``d`` not yet taken (ties: the first; NaN last), marked taken: one
+    step of a stable sort (``np.lexsort``) of a few."""
+    best = -1
+    for k in range(len(d)):
+        if taken[k]:
+            continue
+        if best < 0 or d[k] < d[best] or (d[best] != d[best] and d[k] == d[k]):
+            best = k
+    taken[best] = True
+    return best
+
+
+@numba.njit(cache=True)
 def _target_stencil(X, job, K, a, b, Wa, Wb, params, code, aux, offs, L, d, off):
     """contacts._target_stencil: the targets' SDF at world points ``X`` and their six
     neighbours (``d`` (n, 7), local points ``L``), the sources' SDF (``off``)."""
@@ -581,7 +595,7 @@ def _source_stencil(X, job, K, a, b, Wa, Wb, params, code, aux, offs, L, d):
         _stencil_row(code[s], params[s], aux[s], L[r], offs, d[r])
 
 
-@numba.njit(cache=True, inline="always")
+@numba.njit(cache=True)
 def _stencil_row(code, p, aux, L, offs, d):
     d[0] = sdf(code, p, aux, L[0], L[1], L[2])
     for o in range(6):

@@ -21,7 +21,7 @@ import numpy as np
 
 from artipg.validate.kinematics import _SKEW, _SKEW_SIGN
 from artipg.validate import kinematics
-from artipg.validate.jit_base import drop_stale_caches
+from artipg.validate.jit_base import copy4, drop_stale_caches
 
 drop_stale_caches(__file__, [kinematics.__file__])
 
@@ -43,8 +43,8 @@ def close_pairs(c, h, pad, label):
             if (abs(c[i, 0] - c[j, 0]) - (h[i, 0] + h[j, 0]) < pad and abs(c[i, 1] - c[j, 1]) - (h[i, 1] + h[j, 1]) < pad
                     and abs(c[i, 2] - c[j, 2]) - (h[i, 2] + h[j, 2]) < pad):
                 if n == len(a):
-                    a = _grow(a)
-                    b = _grow(b)
+                    a = grow(a)
+                    b = grow(b)
                 a[n] = i
                 b[n] = j
                 n += 1
@@ -52,9 +52,11 @@ def close_pairs(c, h, pad, label):
 
 
 @numba.njit(cache=True)
-def _grow(x):
-    y = np.empty(2 * len(x), dtype=x.dtype)
-    y[:len(x)] = x
+def grow(x):
+    """An int64 array twice as long as ``x`` starting with ``x``."""
+    y = np.empty(2 * len(x), dtype=np.int64)
+    for i in range(len(x)):
+        y[i] = x[i]
     return y
 
 
@@ -136,16 +138,14 @@ def sweep_pairs(moving, subtree, scene_joint, scene_q, cos_q, sin_q, slides, axi
     sw_c = np.empty((U, 3))
     sw_h = np.empty((U, 3))
     for u in range(U):
-        lo = np.full(3, np.inf)
-        hi = np.full(3, -np.inf)
-        for k in range(n_pose[uj[u]]):
-            r = ustart[u] + k
-            for i in range(3):
-                lo[i] = min(lo[i], cm[r, i] - hm[r, i])
-                hi[i] = max(hi[i], cm[r, i] + hm[r, i])
         for i in range(3):
-            sw_c[u, i] = 0.5 * (lo[i] + hi[i])
-            sw_h[u, i] = 0.5 * (hi[i] - lo[i])
+            lo, hi = np.inf, -np.inf
+            for k in range(n_pose[uj[u]]):
+                r = ustart[u] + k
+                lo = min(lo, cm[r, i] - hm[r, i])
+                hi = max(hi, cm[r, i] + hm[r, i])
+            sw_c[u, i] = 0.5 * (lo + hi)
+            sw_h[u, i] = 0.5 * (hi - lo)
     # candidates by swept box, then per-pose boxes; rows by (joint, moving piece),
     # static piece, pose
     n = 0
@@ -180,7 +180,7 @@ def sweep_pairs(moving, subtree, scene_joint, scene_q, cos_q, sin_q, slides, axi
                     Wa[n, i, 3] = (GR[s, i, 0] * W0[p, 0, 3] + GR[s, i, 1] * W0[p, 1, 3] + GR[s, i, 2] * W0[p, 2, 3]
                                    + Gt[s, i])
                 Wa[n, 3, 3] = 1.0
-                Wb[n] = W0[b]
+                copy4(W0[b], Wb[n])
                 n += 1
     return a_out, b_out, Wa, Wb, s_out
 
@@ -229,7 +229,7 @@ def moved_boxes(GR, Gt, W0, c0, half, s_idx, p_idx):
     return Rm, cm, hm
 
 
-@numba.njit(cache=True, inline="always")
+@numba.njit(cache=True)
 def _overlap(ca, ha, cb, hb, pad):
     """Boxes closer than ``pad`` on every axis (contacts.overlapping)."""
     for i in range(3):

@@ -15,7 +15,7 @@ import numba
 import numpy as np
 
 from artipg.geometry.box import Cuboid, RectRing
-from artipg.validate.jit_base import apply
+from artipg.validate.jit_base import apply, copy4
 from artipg.validate import jit_base
 
 jit_base.drop_stale_caches(__file__, [jit_base.__file__])
@@ -81,7 +81,7 @@ def _assemble(order, P, sizes, ring, kind, width, prim_T, prim_link, prim_part, 
         p = order[i]
         if not ring[g]:
             link[m], part[m], kind_of[m] = prim_link[p], prim_part[p], kind[g]
-            T[m] = prim_T[p]
+            copy4(prim_T[p], T[m])
             for c in range(min(P.shape[1], width)):  # beyond the group's own width: zeros
                 params[m, c] = P[i, c]
             for c in range(3):
@@ -100,7 +100,7 @@ def _assemble(order, P, sizes, ring, kind, width, prim_T, prim_link, prim_part, 
         off[2, 0], off[3, 0] = (ix + bx) / 2, -(ix + bx) / 2
         for b in range(4):
             link[m], part[m], kind_of[m] = prim_link[p], prim_part[p], kind[g]
-            T[m] = prim_T[p]
+            copy4(prim_T[p], T[m])
             for r in range(3):
                 T[m, r, 3] += apply(prim_T[p], off[b, 0], off[b, 1], off[b, 2], r)
             for c in range(3):

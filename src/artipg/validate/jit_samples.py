@@ -286,7 +286,7 @@ def _box_points(out, per, want, off, F, feat, P, rows):
     return out
 
 
-@numba.njit(cache=True, inline="always")
+@numba.njit(cache=True)
 def _affine(q, base, U, u, v):
     """``o + u a + v b`` from the rows o a b of a patch's parameters."""
     return (q[base] + u * q[base + 3 * U] + v * q[base + 6 * U], q[base + U] + u * q[base + 4 * U] + v * q[base + 7 * U],

@@ -23,8 +23,8 @@ import math
 import numba
 import numpy as np
 
-from artipg.validate.jit_base import matmul4, rigid_inverse, set_identity
-from artipg.validate.jit_pairs import _overlap, close_pairs, sweep_pairs, turns_in_place
+from artipg.validate.jit_base import copy4, matmul4, rigid_inverse, set_identity
+from artipg.validate.jit_pairs import _overlap, close_pairs, grow, sweep_pairs, turns_in_place
 from artipg.validate.kinematics import _SKEW, _SKEW_SIGN
 from artipg.validate import jit_base, jit_pairs, kinematics
 
@@ -88,7 +88,7 @@ def _poses(parent, origin, jtype, axis, q):
                 motion[0, 0], motion[0, 1], motion[0, 2] = c + x * x * C, x * y * C - z * s, x * z * C + y * s
                 motion[1, 0], motion[1, 1], motion[1, 2] = y * x * C + z * s, c + y * y * C, y * z * C - x * s
                 motion[2, 0], motion[2, 1], motion[2, 2] = z * x * C - y * s, z * y * C + x * s, c + z * z * C
-            tmp[:] = T[i]
+            copy4(T[i], tmp)
             matmul4(tmp, motion, T[i])
     return T
 
@@ -174,7 +174,11 @@ def build(parent, origin, jtype, axis, limits, movable, link, part, T, center, h
         for j in range(J):
             for m in range(M):
                 subtree[j, m] = desc[movable[j], link[m]]
-        moving = subtree & ~turns_in_place(ax, pt, slides, symmetric, W0)
+        turns = turns_in_place(ax, pt, slides, symmetric, W0)
+        moving = np.empty((J, M), dtype=np.bool_)
+        for j in range(J):
+            for m in range(M):
+                moving[j, m] = subtree[j, m] and not turns[j, m]
         cq = np.empty(S)
         sq = np.empty(S)
         for s in range(S):
@@ -188,10 +192,14 @@ def build(parent, origin, jtype, axis, limits, movable, link, part, T, center, h
         sWa = np.zeros((0, 4, 4))
         sWb = np.zeros((0, 4, 4))
         sw_scene = np.zeros(0, dtype=np.int64)
-    # all joints open: checks._open_pairs
-    F = len(fracs)
-    # lists typed by a first (empty, unused) entry
-    oa, ob, oWa, oWb = [ra[:0]], [ra[:0]], [sWa[:0]], [sWa[:0]]
+    # all joints open: checks._open_pairs (each fraction's pairs appended to o*)
+    F = len(fracs) if J >= 2 else 0
+    n_open = np.zeros(F, dtype=np.int64)
+    oA = np.empty(16, dtype=np.int64)
+    oB = np.empty(16, dtype=np.int64)
+    oWa = np.empty((16, 4, 4))
+    oWb = np.empty((16, 4, 4))
+    no = 0
     inv = np.empty((L, 4, 4))
     for i in range(L):
         rigid_inverse(rest[i], inv[i])
@@ -220,35 +228,45 @@ def build(parent, origin, jtype, axis, limits, movable, link, part, T, center, h
                     break
             if first < i:
                 label[i] = label[first]
-        a, b = close_pairs(c, h, -overlap, label[link])
-        Wa = np.empty((len(a), 4, 4))
-        Wb = np.empty((len(a), 4, 4))
+        piece_label = np.empty(M, dtype=np.int64)
+        for m in range(M):
+            piece_label[m] = label[link[m]]
+        a, b = close_pairs(c, h, -overlap, piece_label)
+        n_open[f] = len(a)
+        while no + len(a) > len(oA):
+            oA, oB, oWa, oWb = grow(oA), grow(oB), _grow_frames(oWa), _grow_frames(oWb)
         for r in range(len(a)):
-            Wa[r], Wb[r] = W[a[r]], W[b[r]]
-        oa.append(a)
-        ob.append(b)
-        oWa.append(Wa)
-        oWb.append(Wb)
+            oA[no], oB[no] = a[r], b[r]
+            copy4(W[a[r]], oWa[no])
+            copy4(W[b[r]], oWb[no])
+            no += 1
     # concatenated, with each row's margin
     sizes = np.empty(2 + F, dtype=np.int64)
     sizes[0], sizes[1] = len(ra), len(sa)
     for f in range(F):
-        sizes[2 + f] = len(oa[f + 1])
-    K = sizes.sum()
+        sizes[2 + f] = n_open[f]
+    K = len(ra) + len(sa) + no
     A = np.empty(K, dtype=np.int64)
     B = np.empty(K, dtype=np.int64)
     WA = np.empty((K, 4, 4))
     WB = np.empty((K, 4, 4))
     margin = np.zeros(K)
+    k = 0
     for r in range(len(ra)):
-        A[r], B[r], WA[r], WB[r], margin[r] = ra[r], rb[r], W0[ra[r]], W0[rb[r]], floating
-    k = len(ra)
-    A[k:k + len(sa)], B[k:k + len(sa)], WA[k:k + len(sa)], WB[k:k + len(sa)] = sa, sb, sWa, sWb
-    k += len(sa)
-    for f in range(1, F + 1):
-        n = len(oa[f])
-        A[k:k + n], B[k:k + n], WA[k:k + n], WB[k:k + n] = oa[f], ob[f], oWa[f], oWb[f]
-        k += n
+        A[k], B[k], margin[k] = ra[r], rb[r], floating
+        copy4(W0[ra[r]], WA[k])
+        copy4(W0[rb[r]], WB[k])
+        k += 1
+    for r in range(len(sa)):
+        A[k], B[k] = sa[r], sb[r]
+        copy4(sWa[r], WA[k])
+        copy4(sWb[r], WB[k])
+        k += 1
+    for r in range(no):
+        A[k], B[k] = oA[r], oB[r]
+        copy4(oWa[r], WA[k])
+        copy4(oWb[r], WB[k])
+        k += 1
     # pairs measured by samples: frames between the pieces, and the jobs that come near
     box = np.empty(K, dtype=np.bool_)
     ball = np.empty(K, dtype=np.bool_)
@@ -387,7 +405,7 @@ def poses_batch(parent, origin, jtype, axis, Q):
             matmul4(T[s, parent[i]], origin[i], T[s, i])
             if moves:
                 _rotation(axis[i], Q[s, i], jtype[i] == 2, M)
-                tmp[:] = T[s, i]
+                copy4(T[s, i], tmp)
                 matmul4(tmp, M, T[s, i])
     return T
 
@@ -444,24 +462,19 @@ def blocked_rows(parent, origin, jtype, axis, Q, desc, link, T, center, half, pj
                     if not _overlap(c[s, x], h[s, x], c[s, y], h[s, y], pad):
                         continue
                     if n == len(A):
-                        A, B, own = _grow_int(A), _grow_int(B), _grow_int(own)
+                        A, B, own = grow(A), grow(B), grow(own)
                         WA, WB = _grow_frames(WA), _grow_frames(WB)
                     A[n], B[n], own[n] = both[x], both[y], p
-                    WA[n], WB[n] = W[s, x], W[s, y]
+                    copy4(W[s, x], WA[n])
+                    copy4(W[s, y], WB[n])
                     n += 1
         rows += S
     return A[:n].copy(), B[:n].copy(), WA[:n].copy(), WB[:n].copy(), own[:n].copy()
 
 
 @numba.njit(cache=True)
-def _grow_int(x):
-    y = np.empty(2 * len(x), dtype=x.dtype)
-    y[:len(x)] = x
-    return y
-
-
-@numba.njit(cache=True)
 def _grow_frames(x):
     y = np.empty((2 * len(x), 4, 4))
-    y[:len(x)] = x
+    for i in range(len(x)):
+        copy4(x[i], y[i])
     return y
