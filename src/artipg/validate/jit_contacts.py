@@ -5,10 +5,11 @@
 separating-axis test and exact box distance, ball-ball pairs by their centres, other
 pairs by the same culled minimum over surface samples of the exact SDFs
 (:mod:`artipg.validate.rowsdf`), each written out one row (one point) at a time with
-the numpy code's operations in the numpy code's order. What numba cannot reproduce
-bit for bit stays numpy: the rigid transforms between pieces (a matrix product,
-which numpy hands to BLAS) and the sines and cosines of the SDF tables
-(:func:`piece_table`).
+the numpy code's operations in the numpy code's order. :func:`refine_distance` is
+:func:`artipg.validate.contacts.refine_distance` the same way. The frames between
+pieces (a matrix product: BLAS) stay numpy here (:mod:`artipg.validate.jit_scenes`
+forms them in its kernel where :func:`artipg.validate.jit_base.kernels_match`
+holds); the SDFs' ``hypot`` and the tables' sines need that probe too.
 
 This module imports numba: import it lazily (``import artipg`` stays light).
 """

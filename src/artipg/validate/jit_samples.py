@@ -1,12 +1,18 @@
 """Surface samples of one geometry template's pieces in one compiled pass.
 
-:func:`draw_group` is :func:`artipg.validate.shapes._sample_group` with everything
-that depends on the samples (the counts, the patch pick, the family samplers, a box's
-corners and edge points) done by one numba kernel: the same draws from the same
-stream and the same arithmetic in the same order, so its points are bit for bit
-those of ``_sample_group`` (``tests/test_validate_fast.py`` checks it on every
-category). The templates' own component areas and patch blocks are still computed
-by their numpy code.
+:func:`draw_group` is :func:`artipg.validate.shapes._sample_group` compiled: the same
+draws from the same stream and the same arithmetic in the same order, so its points
+are bit for bit those of ``_sample_group`` (``tests/test_validate_compiled.py``).
+
+- cuboids, frusta, rings, spheres and tori (:data:`TEMPLATE_CODES`): one kernel
+  computes everything, the templates' component areas and patch parameters
+  included (their own expressions, written out one piece at a time: the tests
+  compare both with the templates' ``component_areas`` and ``patches``);
+- other templates (prisms): their numpy ``component_areas`` and ``patches``, then
+  one kernel for the counts, the patch pick, the family samplers and the points.
+
+:func:`require` does :meth:`artipg.validate.shapes.Pieces.require`'s bookkeeping in
+the kernels as well.
 
 This module imports numba: import it lazily (``import artipg`` stays light).
 """
