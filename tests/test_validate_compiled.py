@@ -63,11 +63,12 @@ def _variants(category: str, seed: int):
 def numpy_path(monkeypatch):
     """Run a callable with the kernels off: ``numpy_path(f)``."""
     def run(f):
+        before = compiled.ENABLED
         monkeypatch.setattr(compiled, "ENABLED", False)
         try:
             return f()
         finally:
-            monkeypatch.setattr(compiled, "ENABLED", True)
+            monkeypatch.setattr(compiled, "ENABLED", before)
 
     return run
 
