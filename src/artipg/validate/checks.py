@@ -23,7 +23,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from artipg.validate.contacts import (close_pairs, deepest_point, overlapping, pair_distance, refine_distance,
+from artipg.validate import compiled
+from artipg.validate.contacts import (_DENSE, close_pairs, deepest_point, overlapping, pair_distance, refine_distance,
                                       world_boxes)
 from artipg.validate.kinematics import Kinematics, rigid_inverse, rotations
 from artipg.validate.report import CheckResult, Issue
@@ -75,6 +76,41 @@ def run_checks(kin: Kinematics, pieces: Pieces, tol: Tolerances = Tolerances()) 
     dict
         ``{"penetration": CheckResult, "floating": ..., "joint_sweep": ...}``.
     """
+    if compiled.ENABLED and pieces.n <= _DENSE and _kernels_match():
+        from artipg.validate.jit_scenes import scenes as compiled_scenes
+
+        W0, c0, h0, scenes = compiled_scenes(kin, pieces, tol, _OVERLAP)
+    else:
+        W0, c0, h0, scenes = _scenes(kin, pieces, tol)
+    rest_s = scenes[0]
+    # curved pieces whose samples say "apart" while their boxes say "maybe touching"
+    # (a ball on a plane): refine the distance before judging contact
+    ra, rb, rd = rest_s["a"], rest_s["b"], rest_s["d"]
+    amb = (~(pieces.is_box[ra] & pieces.is_box[rb]) & (rd > tol.floating)).nonzero()[0]
+    if len(amb):
+        ia, ib = ra[amb], rb[amb]
+        lb = np.sqrt((np.maximum(np.abs(c0[ia] - c0[ib]) - h0[ia] - h0[ib], 0.0) ** 2).sum(axis=1))
+        amb = amb[lb <= tol.floating]
+    if len(amb):
+        rd[amb] = np.minimum(rd[amb], refine_distance(pieces, ra[amb], rb[amb], W0[ra[amb]], W0[rb[amb]],
+                                                      iters=3, stop_below=tol.floating))
+    return {
+        "penetration": _penetration(kin, pieces, rest_s, tol),
+        "floating": _floating(kin, pieces, W0, rest_s, tol),
+        "joint_sweep": _sweep_result(kin, pieces, scenes[1], scenes[2:], tol),
+    }
+
+
+def _kernels_match() -> bool:
+    """:func:`artipg.validate.jit_base.kernels_match` (imported on first use: numba)."""
+    from artipg.validate.jit_base import kernels_match
+
+    return kernels_match()
+
+
+def _scenes(kin, pieces, tol):
+    """The rest, sweep and open scenes with their distances ``"d"``: ``(W0, c0, h0,
+    [rest, sweep, open...])`` (W0: piece frames at rest, c0, h0: their world boxes)."""
     rest = kin.poses()
     W0 = rest[pieces.link] @ pieces.T
     c0, h0 = world_boxes(pieces, W0)
@@ -94,23 +130,7 @@ def run_checks(kin: Kinematics, pieces: Pieces, tol: Tolerances = Tolerances()) 
         s["d"] = d[k:k + n]
         s["Wa"], s["Wb"] = Wa[k:k + n], Wb[k:k + n]
         k += n
-    rest_s = scenes[0]
-    # curved pieces whose samples say "apart" while their boxes say "maybe touching"
-    # (a ball on a plane): refine the distance before judging contact
-    ra, rb, rd = rest_s["a"], rest_s["b"], rest_s["d"]
-    amb = (~(pieces.is_box[ra] & pieces.is_box[rb]) & (rd > tol.floating)).nonzero()[0]
-    if len(amb):
-        ia, ib = ra[amb], rb[amb]
-        lb = np.sqrt((np.maximum(np.abs(c0[ia] - c0[ib]) - h0[ia] - h0[ib], 0.0) ** 2).sum(axis=1))
-        amb = amb[lb <= tol.floating]
-    if len(amb):
-        rd[amb] = np.minimum(rd[amb], refine_distance(pieces, ra[amb], rb[amb], W0[ra[amb]], W0[rb[amb]],
-                                                      iters=3, stop_below=tol.floating))
-    return {
-        "penetration": _penetration(kin, pieces, rest_s, tol),
-        "floating": _floating(kin, pieces, W0, rest_s, tol),
-        "joint_sweep": _sweep_result(kin, pieces, scenes[1], scenes[2:], tol),
-    }
+    return W0, c0, h0, scenes
 
 
 # -------------------------------------------------------------------- pair building
@@ -134,11 +154,11 @@ def _sweep_pairs(kin, pieces, rest, W0, c0, h0, tol) -> dict:
         return out
     axes = kin.world_axes(rest)
     subtree = kin.descendants[movable][:, pieces.link]  # (J, M): pieces each joint moves
+    scene_joint, scene_q = kin.sweep_table(tol.sweep_poses)
+    out["joint"], out["q"] = scene_joint, scene_q
     # a solid of revolution turning about its own axis occupies the same space at
     # every joint value: its rest result stands for the whole sweep
     moving = subtree & ~_turns_in_place(kin, pieces, axes, W0)
-    scene_joint, scene_q = kin.sweep_table(tol.sweep_poses)
-    out["joint"], out["q"] = scene_joint, scene_q
     uj, up = np.nonzero(moving)  # (joint, moving piece) pairs
     if not len(uj):
         return out
@@ -151,15 +171,7 @@ def _sweep_pairs(kin, pieces, rest, W0, c0, h0, tol) -> dict:
     p_idx = up.repeat(counts)
     GR, Gt = _world_motions(kin, axes, scene_joint, scene_q)  # (S, 3, 3), (S, 3)
     GR, Gt = GR[s_idx], Gt[s_idx]  # every row's
-    # boxes of the moving pieces at every pose: centre G c0, axes G R0
-    R0 = W0[p_idx, :3, :3]
-    Rm = (GR[:, :, 0, None] * R0[:, 0, None, :] + GR[:, :, 1, None] * R0[:, 1, None, :]
-          + GR[:, :, 2, None] * R0[:, 2, None, :])
-    c = c0[p_idx]
-    cm = GR[:, :, 0] * c[:, 0, None] + GR[:, :, 1] * c[:, 1, None] + GR[:, :, 2] * c[:, 2, None] + Gt
-    hp = pieces.half[p_idx]
-    Am = np.abs(Rm)
-    hm = Am[:, :, 0] * hp[:, 0, None] + Am[:, :, 1] * hp[:, 1, None] + Am[:, :, 2] * hp[:, 2, None]
+    Rm, cm, hm = _moved_boxes(GR, Gt, W0[p_idx], c0[p_idx], pieces.half[p_idx])
     # swept box of each (joint, moving piece) over all its poses
     lo = np.minimum.reduceat(cm - hm, starts)
     hi = np.maximum.reduceat(cm + hm, starts)
@@ -181,6 +193,19 @@ def _sweep_pairs(kin, pieces, rest, W0, c0, h0, tol) -> dict:
     Wm[:, 3, 3] = 1.0
     out.update(a=p_idx[rows], b=bb, Wa=Wm, Wb=W0[bb], scene=s_idx[rows])
     return out
+
+
+def _moved_boxes(GR, Gt, W, c, h):
+    """Pieces (frames ``W`` (n, 4, 4), world boxes ``c``, local half extents ``h``)
+    moved by rotations ``GR`` (n, 3, 3) and translations ``Gt`` (n, 3): the rotation
+    of each moved frame (n, 3, 3) and its world box (centres, half extents: (n, 3))."""
+    R0 = W[:, :3, :3]
+    Rm = (GR[:, :, 0, None] * R0[:, 0, None, :] + GR[:, :, 1, None] * R0[:, 1, None, :]
+          + GR[:, :, 2, None] * R0[:, 2, None, :])
+    cm = GR[:, :, 0] * c[:, 0, None] + GR[:, :, 1] * c[:, 1, None] + GR[:, :, 2] * c[:, 2, None] + Gt
+    Am = np.abs(Rm)
+    hm = Am[:, :, 0] * h[:, 0, None] + Am[:, :, 1] * h[:, 1, None] + Am[:, :, 2] * h[:, 2, None]
+    return Rm, cm, hm
 
 
 def _world_motions(kin, axes, joint, q):
@@ -315,17 +340,40 @@ def _gap(pieces, W0, src_mask, tgt_mask) -> float:
     return max(best, 0.0)
 
 
-def _floating(kin, pieces, W0, s, tol) -> CheckResult:
-    a, b, D = s["a"], s["b"], s["d"]
-    issues = []
+def _contact_graphs(L, P, pieces, a, b, D, tol):
+    """:func:`artipg.validate.jit_scenes.contact_graphs` in numpy: the link and part
+    contact graphs of the rest pairs (see there)."""
     touch = D <= tol.floating
-    L = kin.n_links
     has_geom = np.bincount(pieces.link, minlength=L) > 0
-    # links: one contact graph holding the root (or the first link with geometry)
     cross = touch & (pieces.link[a] != pieces.link[b])
     comp = _components(L, pieces.link[a[cross]], pieces.link[b[cross]])
     geo = has_geom.nonzero()[0]
-    if len(geo):
+    several = len(geo) > 0 and len(np.unique(comp[geo])) > 1
+    same = touch & (pieces.link[a] == pieces.link[b])
+    pcomp = _components(P, pieces.part[a[same]], pieces.part[b[same]])
+    has_piece = np.bincount(pieces.part, minlength=P) > 0
+    hp = has_piece.nonzero()[0]
+    lo, hi = np.full(L, P), np.full(L, -1)
+    np.minimum.at(lo, pieces.part_link[hp], pcomp[hp])
+    np.maximum.at(hi, pieces.part_link[hp], pcomp[hp])
+    return comp, pcomp, has_geom, has_piece, lo, hi, several
+
+
+def _floating(kin, pieces, W0, s, tol) -> CheckResult:
+    a, b, D = s["a"], s["b"], s["d"]
+    issues = []
+    L = kin.n_links
+    P = len(pieces.part_names)
+    if compiled.ENABLED:
+        from artipg.validate.jit_scenes import contact_graphs
+
+        comp, pcomp, has_geom, has_piece, lo, hi, several = contact_graphs(
+            L, P, pieces.link, pieces.part, pieces.part_link, a, b, D, float(tol.floating))
+    else:
+        comp, pcomp, has_geom, has_piece, lo, hi, several = _contact_graphs(L, P, pieces, a, b, D, tol)
+    # links: one contact graph holding the root (or the first link with geometry)
+    if several:
+        geo = has_geom.nonzero()[0]
         main = comp[geo[0]]
         for c in np.unique(comp[geo]):
             if c == main:
@@ -337,16 +385,8 @@ def _floating(kin, pieces, W0, s, tol) -> CheckResult:
             parents = sorted({kin.names[kin.parent[i]] for i in links if kin.parent[i] >= 0})
             issues.append(Issue("floating", "floating_link", gap, [kin.names[i] for i in links], [],
                                 detail="does not touch the rest of the object (parent: " + ", ".join(parents) + ")"))
-    # parts: the parts of each link form one contact graph
-    P = len(pieces.part_names)
-    same = touch & (pieces.link[a] == pieces.link[b])
-    pcomp = _components(P, pieces.part[a[same]], pieces.part[b[same]])
-    has_piece = np.bincount(pieces.part, minlength=P) > 0
-    hp = has_piece.nonzero()[0]
-    # links whose parts fall into more than one component
-    lo, hi = np.full(kin.n_links, P), np.full(kin.n_links, -1)
-    np.minimum.at(lo, pieces.part_link[hp], pcomp[hp])
-    np.maximum.at(hi, pieces.part_link[hp], pcomp[hp])
+    # parts: the parts of each link form one contact graph; links whose parts fall
+    # into more than one component
     split = (hi > lo).nonzero()[0].tolist()
     if split:
         weight = np.bincount(pieces.part, weights=np.prod(2 * pieces.half, axis=1), minlength=P)
@@ -383,33 +423,56 @@ def _blocker(kin, link: int, j: int) -> int:
 
 
 def _blockers(kin, pieces, sw, bad):
-    """Moving joint and :func:`_blocker` (link indices, lists) of each sweep row ``bad``."""
+    """Moving joint and :func:`_blocker` (link indices, (len(bad),) int64 arrays) of
+    each sweep row ``bad``."""
     j = sw["movable"][sw["joint"][sw["scene"][bad]]]
     lb = pieces.link[sw["b"][bad]]
     _, first, inv = np.unique(j * kin.n_links + lb, return_index=True, return_inverse=True)
     k = np.array([_blocker(kin, int(lb[f]), int(j[f])) for f in first.tolist()], dtype=np.int64)[inv]
-    return j.tolist(), k.tolist()
+    return j, k
 
 
-def _needs_open(kin, pieces, sw, tol, bad) -> dict:
+def _needs_open(kin, pieces, sw, tol, blockers) -> dict:
     """Sweep collisions with a part that another joint moves (a rack behind a
     dishwasher door): re-checked with that joint open; returns {(j, k): depth} of
     the (moving joint, blocking joint) link indices, depth < 0 when opening k clears
-    the way for j. All (j, k) pairs share one batch of poses and one distance pass."""
-    pairs = {}
-    for j, k in zip(*_blockers(kin, pieces, sw, bad)):  # in order of first occurrence
-        if k > 0:
-            pairs[(j, k)] = None
-    pairs = list(pairs)
+    the way for j. All (j, k) pairs share one batch of poses and one distance pass.
+    ``blockers``: :func:`_blockers` of the colliding sweep rows."""
+    j, k = blockers
+    sel = k > 0
+    j, k = j[sel], k[sel]
+    first = np.sort(np.unique(j * kin.n_links + k, return_index=True)[1])  # in order of first occurrence
+    pairs = list(zip(j[first].tolist(), k[first].tolist()))
     if not pairs:
         return {}
     up = kin.open_values(1.0)
-    Qs, rows, A, B, Wa, Wb, owner = [], 0, [], [], [], [], []
+    Qs = []
     for j, k in pairs:
         qs = kin.sweep_values(j, tol.sweep_poses)
         Q = np.zeros((len(qs), kin.n_links))
         Q[:, j], Q[:, k] = qs, up[kin.joint_names[k]]
         Qs.append(Q)
+    if compiled.ENABLED and _kernels_match():
+        from artipg.validate.jit_scenes import blocked_rows
+
+        A, B, Wa, Wb, owner = blocked_rows(kin.parent, kin.origin, kin.type_codes, kin.axis, np.concatenate(Qs),
+                                           kin.descendants, pieces.link, pieces.T, pieces.center, pieces.half,
+                                           np.array([j for j, _ in pairs]), np.array([k for _, k in pairs]),
+                                           np.array([len(Q) for Q in Qs]), -_OVERLAP)
+    else:
+        A, B, Wa, Wb, owner = _blocked_rows(kin, pieces, pairs, Qs)
+    d = pair_distance(pieces, A, B, Wa, Wb, 0.0)
+    worst = np.full(len(pairs), -np.inf)
+    np.maximum.at(worst, owner, -d)
+    return {jk: float(w) if np.isfinite(w) else 0.0 for jk, w in zip(pairs, worst)}
+
+
+def _blocked_rows(kin, pieces, pairs, Qs):
+    """The pairs of pieces :func:`_needs_open` measures: for each (moving joint j,
+    blocking joint k) and its joint values ``Qs`` (rows (S, L)), the pieces only j
+    moves against those only k moves, where their boxes overlap; ``(a, b, Wa, Wb,
+    owner)`` (owner: the index of the (j, k) pair)."""
+    rows, A, B, Wa, Wb, owner = 0, [], [], [], [], []
     P = kin.poses_batch(np.concatenate(Qs))
     for p, (j, k) in enumerate(pairs):
         S = len(Qs[p])
@@ -429,11 +492,7 @@ def _needs_open(kin, pieces, sw, tol, bad) -> dict:
         si, ia, ib = np.nonzero(ok)
         A.append(a[ia]), B.append(b[ib]), Wa.append(W[si, ia]), Wb.append(W[si, na + ib])
         owner.append(np.full(len(ia), p))
-    owner = np.concatenate(owner)
-    d = pair_distance(pieces, np.concatenate(A), np.concatenate(B), np.concatenate(Wa), np.concatenate(Wb), 0.0)
-    worst = np.full(len(pairs), -np.inf)
-    np.maximum.at(worst, owner, -d)
-    return {jk: float(w) if np.isfinite(w) else 0.0 for jk, w in zip(pairs, worst)}
+    return (np.concatenate(A), np.concatenate(B), np.concatenate(Wa), np.concatenate(Wb), np.concatenate(owner))
 
 
 def _sweep_result(kin, pieces, sw, opens, tol) -> CheckResult:
@@ -445,12 +504,14 @@ def _sweep_result(kin, pieces, sw, opens, tol) -> CheckResult:
     if len(bad):
         # a collision with a part another joint moves is no fault when opening that
         # joint clears the way (racks behind a door): keep the rest
-        deps = _needs_open(kin, pieces, sw, tol, bad)
+        bj, bk = _blockers(kin, pieces, sw, bad)
+        deps = _needs_open(kin, pieces, sw, tol, (bj, bk))
         cleared = {jk for jk, depth in deps.items() if depth <= tol.penetration}
         if cleared:
             info["needs_open"] = {kin.joint_names[j]: sorted(kin.joint_names[k] for jj, k in cleared if jj == j)
                                   for j in sorted({j for j, _ in cleared})}
-            bad = bad[[jk not in cleared for jk in zip(*_blockers(kin, pieces, sw, bad))]]
+            L = kin.n_links
+            bad = bad[~((bk > 0) & np.isin(bj * L + bk, [j * L + k for j, k in cleared]))]
             worst = max(0.0, float(-D[bad].min())) if len(bad) else 0.0
     if len(bad):
         joint = sw["joint"][sw["scene"][bad]]

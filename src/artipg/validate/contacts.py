@@ -24,6 +24,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from artipg.validate import compiled
 from artipg.validate.kinematics import rigid_inverse
 from artipg.validate.rowsdf import cuboid_rows
 from artipg.validate.shapes import Pieces
@@ -65,6 +66,7 @@ def overlapping(ca, ha, cb, hb, pad: float) -> np.ndarray:
 
 #: Largest number of boxes for which :func:`close_pairs` tests all pairs directly.
 _DENSE = 256
+_NO_LABEL = np.zeros(0, dtype=np.int64)
 
 
 def close_pairs(c: np.ndarray, h: np.ndarray, pad: float, label: np.ndarray | None = None
@@ -79,6 +81,10 @@ def close_pairs(c: np.ndarray, h: np.ndarray, pad: float, label: np.ndarray | No
     the same test is applied to these candidates.
     """
     M = len(c)
+    if M <= _DENSE and compiled.ENABLED:
+        from artipg.validate.jit_pairs import close_pairs as close_pairs_jit
+
+        return close_pairs_jit(c, h, float(pad), _NO_LABEL if label is None else label)
     if M <= _DENSE:
         ok = overlapping(c, h, c, h, pad)
         if label is not None:
@@ -130,6 +136,10 @@ def pair_distance(pieces: Pieces, a: np.ndarray, b: np.ndarray, Wa: np.ndarray, 
     if K == 0:
         return out
     margin = _per_row(margin, K)
+    if pieces.jit_table is not None:
+        from artipg.validate import jit_contacts
+
+        return jit_contacts.pair_distance(pieces, a, b, Wa, Wb, margin)
     box = pieces.is_box[a] & pieces.is_box[b]
     i = box.nonzero()[0]
     if len(i):
@@ -406,6 +416,11 @@ def refine_distance(pieces: Pieces, a: np.ndarray, b: np.ndarray, Wa: np.ndarray
     K = len(a)
     if K == 0:
         return np.zeros(0)
+    if pieces.jit_table is not None:
+        from artipg.validate import jit_base, jit_contacts
+
+        if jit_base.kernels_match():
+            return jit_contacts.refine_distance(pieces, a, b, Wa, Wb, starts, iters, stop_below)
     src = np.concatenate([a, b])
     tgt = np.concatenate([b, a])
     Ws = np.concatenate([Wa, Wb])

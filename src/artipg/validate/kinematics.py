@@ -15,6 +15,8 @@ from functools import cached_property
 import numpy as np
 
 MOVABLE = ("revolute", "prismatic", "continuous")
+#: Codes of the movable joint types (:attr:`Kinematics.type_codes`).
+MOVABLE_CODES = {"revolute": 1, "prismatic": 2, "continuous": 3}
 _I4 = np.eye(4)
 
 
@@ -53,18 +55,13 @@ class Kinematics:
         """The tree of an :class:`artipg.model.ArticulatedObject`."""
         idx = obj.link_index
         L = len(obj.links)
-        parent = np.full(L, -1, dtype=np.int64)
-        origin = np.tile(_I4, (L, 1, 1))
-        axis = np.zeros((L, 3))
-        limits = np.zeros((L, 2))
-        jn, jt = [""] * L, ["fixed"] * L
-        for i, link in enumerate(obj.links[1:], start=1):
-            j = link.joint
-            parent[i] = idx[j.parent]
-            origin[i] = j.origin
-            axis[i] = j.axis
-            limits[i] = j.limits
-            jn[i], jt[i] = j.name, j.type
+        joints = [lk.joint for lk in obj.links[1:]]
+        parent = np.array([-1] + [idx[j.parent] for j in joints], dtype=np.int64)
+        origin = np.concatenate([_I4] + [np.asarray(j.origin, dtype=float) for j in joints]).reshape(L, 4, 4)
+        axis = np.array([(0.0, 0.0, 0.0)] + [j.axis for j in joints], dtype=float).reshape(L, 3)
+        limits = np.array([(0.0, 0.0)] + [j.limits for j in joints], dtype=float).reshape(L, 2)
+        jn = [""] + [j.name for j in joints]
+        jt = ["fixed"] + [j.type for j in joints]
         return cls([lk.name for lk in obj.links], parent, jn, jt, origin, axis, limits)
 
     @property
@@ -83,6 +80,12 @@ class Kinematics:
     def slides(self) -> np.ndarray:
         """Boolean (J,): the :meth:`movable` joint is prismatic."""
         return np.array([self.joint_types[i] == "prismatic" for i in self.movable()], dtype=bool)
+
+    @cached_property
+    def type_codes(self) -> np.ndarray:
+        """Joint type of each link as a code (L,) int64: 0 fixed (or any other
+        immovable type), 1 revolute, 2 prismatic, 3 continuous."""
+        return np.array([MOVABLE_CODES.get(t, 0) for t in self.joint_types], dtype=np.int64)
 
     @cached_property
     def continuous(self) -> np.ndarray:

@@ -34,6 +34,7 @@ import numpy as np
 from artipg.geometry.box import Cuboid, RectRing
 from artipg.geometry.patches import sample_family
 from artipg.geometry.revolve import Frustum, Ring, Sphere, Torus
+from artipg.validate import compiled
 from artipg.validate.rowsdf import PREPARE, prepare_quad_profiles
 from artipg.validate.streams import UniformStream
 
@@ -57,7 +58,8 @@ class Pieces:
     center, half : (M, 3) float64
         Local axis-aligned bounding box (centre and half extents), piece frame.
     geom : list
-        Geometry template of every piece, or None for a mesh piece.
+        Geometry template of every piece, or None for a mesh piece (unused with
+        ``kinds``).
     params : (M, p) float64
         Parameters of primitive pieces (zero-padded).
     part_names : list of str
@@ -69,45 +71,49 @@ class Pieces:
         that number, see :func:`stream_seed`).
     meshes : dict, optional
         Piece index -> ``trimesh.Trimesh`` (piece frame) for mesh pieces.
+    kinds : tuple, optional
+        The templates in order of first appearance and each piece's index into them
+        ((M,) int64), instead of ``geom``.
     """
 
-    def __init__(self, link, part, T, center, half, geom, params, part_names, part_link, rng, meshes=None):
+    def __init__(self, link, part, T, center, half, geom, params, part_names, part_link, rng, meshes=None, *,
+                 kinds=None):
         self.link = np.asarray(link, dtype=np.int64)
         self.part = np.asarray(part, dtype=np.int64)
         self.T = T
         self.center = center
         self.half = half
-        self.geom = list(geom)
         self.params = params
         self.part_names = list(part_names)
         self.part_link = np.asarray(part_link, dtype=np.int64)
         self.meshes = meshes or {}
         # one stream per geometry template (meshes: per piece), children of this seed
         self._seed = stream_seed(rng)
-        index: dict = {}
-        kind = [index.setdefault(g, len(index)) for g in self.geom]  # kinds in order of appearance
-        kinds = list(index)
-        self._kinds = kinds
-        self._kind = np.array(kind, dtype=np.int64)
-        self._nparams = [len(g.params) if g is not None else 0 for g in kinds]
-        M = len(self.geom)
+        if kinds is None:  # kinds in order of appearance, and each piece's
+            index: dict = {}
+            kind = [index.setdefault(g, len(index)) for g in geom]
+            kinds = (list(index), np.array(kind, dtype=np.int64))
+        self._kinds, self._kind = kinds
+        self._nparams = [len(g.params) if g is not None else 0 for g in self._kinds]
+        M = len(self._kind)
         # template of every piece as a small code, for per-template flags
-        code = np.array([_CODES.get(g, 0) for g in kinds] + [0], dtype=np.int64)[self._kind if M else np.zeros(0, int)]
+        code = np.array([_CODES.get(g, 0) for g in self._kinds] + [0], dtype=np.int64)[self._kind]
         self._code = code
         self.is_box = code == _CODES[Cuboid]
         # full solids of revolution about their local z axis (frustum, full ring or
-        # torus, sphere): unchanged by a turn about that axis
-        w = self.params.shape[1]
-        full = self.params[:, 3] >= 2 * np.pi - 1e-9 if w > 3 else np.zeros(M, bool)
-        arc = self.params[:, 2] >= 2 * np.pi - 1e-9 if w > 2 else np.zeros(M, bool)
-        # whole balls (a sphere not cut by its slab): exact ball-ball distances
-        sphere = code == _CODES[Sphere]
-        if sphere.any():
+        # torus, sphere): unchanged by a turn about that axis; whole balls (a sphere
+        # not cut by its slab): exact ball-ball distances
+        symmetric = code == _CODES[Frustum]
+        self.is_ball = np.zeros(M, dtype=bool)
+        if Sphere in self._kinds:
+            sphere = code == _CODES[Sphere]
             self.is_ball = sphere & (self.params[:, 1] <= -self.params[:, 0]) & (self.params[:, 2] >= self.params[:, 0])
-        else:
-            self.is_ball = sphere
-        self.symmetric = ((code == _CODES[Frustum]) | sphere | ((code == _CODES[Ring]) & full)
-                          | ((code == _CODES[Torus]) & arc))
+            symmetric |= sphere
+        if Ring in self._kinds:
+            symmetric |= (code == _CODES[Ring]) & (self.params[:, 3] >= 2 * np.pi - 1e-9)
+        if Torus in self._kinds:
+            symmetric |= (code == _CODES[Torus]) & (self.params[:, 2] >= 2 * np.pi - 1e-9)
+        self.symmetric = symmetric
         self.symmetric_rows = self.symmetric.nonzero()[0]
         self.start = np.zeros(M, dtype=np.int64)
         self.count = np.zeros(M, dtype=np.int64)
@@ -115,6 +121,11 @@ class Pieces:
         self._chunks: list = []  # (3, n) blocks of samples, in drawing order
         self._size = 0
         self._points_t = np.zeros((3, 0))
+
+    @property
+    def geom(self) -> list:
+        """Geometry template of every piece (None: a mesh piece)."""
+        return [self._kinds[k] for k in self._kind.tolist()]
 
     @property
     def n(self) -> int:
@@ -145,6 +156,20 @@ class Pieces:
                 out[sel, 0], out[sel, 1] = q[:, 0] - q[:, 1], q[:, 0] + q[:, 1]
         return out
 
+    @cached_property
+    def jit_table(self):
+        """The SDF codes, parameter table and radial extents of the pieces for the
+        compiled kernels (:func:`artipg.validate.jit_contacts.piece_table`), or None
+        where a piece has no compiled SDF (a mesh) or the kernels are off
+        (:mod:`artipg.validate.compiled`)."""
+        if not compiled.ENABLED or any(g is None for g in self._kinds) or not _kernels_match():
+            return None
+        from artipg.validate.jit_contacts import SDF_CODES, piece_table
+
+        if any(g not in SDF_CODES for g in self._kinds):
+            return None
+        return piece_table(self)
+
     @property
     def points_t(self) -> np.ndarray:
         """All surface samples drawn so far as coordinate rows (3, N), piece frames:
@@ -171,30 +196,50 @@ class Pieces:
         once from that template's own stream; mesh pieces one by one, each from its
         own stream. The samples of a piece are thus the same whatever was drawn before.
         """
-        need = np.zeros(self.n, dtype=bool)
-        need[np.asarray(idx, dtype=np.int64)] = True
-        need &= ~self._drawn
-        if not need.any():
-            return
-        for k in np.bincount(self._kind[need], minlength=len(self._kinds)).nonzero()[0].tolist():
+        if compiled.ENABLED and _kernels_match():
+            from artipg.validate import jit_samples
+
+            left = jit_samples.require(self, idx)
+            if left is None or not left[0]:
+                return
+            kinds, need = left
+        else:
+            need = np.zeros(self.n, dtype=bool)
+            need[np.asarray(idx, dtype=np.int64)] = True
+            need &= ~self._drawn
+            if not need.any():
+                return
+            kinds = np.bincount(self._kind[need], minlength=len(self._kinds)).nonzero()[0].tolist()
+        for k in kinds:
             g = self._kinds[k]
             if g is None:
                 rows = (need & (self._kind == k)).nonzero()[0]
                 streams = [self._stream(len(self._kinds) + int(r)) for r in rows]
                 p, owner = _sample_meshes([self.meshes[int(r)] for r in rows], rows, streams)
                 order = np.argsort(owner, kind="stable")
-                p, cnt = p[order], np.bincount(owner, minlength=self.n)[rows]
+                p, cnt = p[order].T, np.bincount(owner, minlength=self.n)[rows]
             else:
                 rows = (self._kind == k).nonzero()[0]
                 want = need[rows]
-                p, cnt = _sample_group(g, self.params[rows, :self._nparams[k]], UniformStream(self._seed, k),
-                                       None if want.all() else want)
-                rows, cnt = rows[want], cnt[want]
+                want = None if want.all() else want
+                P = self.params[rows, :self._nparams[k]]
+                got = None
+                if compiled.ENABLED and _kernels_match():
+                    from artipg.validate.jit_samples import draw_group
+
+                    got = draw_group(g, P, self._seed, k, want)
+                if got is None:
+                    p, cnt = _sample_group(g, P, UniformStream(self._seed, k), want)
+                    p = p.T
+                else:
+                    p, cnt = got
+                if want is not None:
+                    rows, cnt = rows[want], cnt[want]
             self.start[rows] = self._size + cnt.cumsum() - cnt
             self.count[rows] = cnt
             self._drawn[rows] = True
-            self._chunks.append(np.ascontiguousarray(p.T))
-            self._size += len(p)
+            self._chunks.append(np.ascontiguousarray(p))  # (3, n)
+            self._size += p.shape[1]
 
     def _stream(self, key: int) -> np.random.Generator:
         """The sample stream ``key`` (a template index, or a mesh piece's) of this object."""
@@ -277,33 +322,40 @@ class Pieces:
         """
         table = obj.primitive_table
         local = getattr(table, "local_boxes", None)  # the templates' bounds_batch, cached by generation
-        geom, Ps, Ts, links, parts, boxes = [], [], [], [], [], []
+        part_names = [p.name for p in obj.parts]
+        if compiled.ENABLED and local is not None and table.groups and _kernels_match():
+            from artipg.validate.jit_pieces import pieces_arrays
+
+            link, part, T, center, half, params, kinds = pieces_arrays(table, local)
+            return cls(link, part, T, center, half, None, params, part_names, obj.part_link, rng, kinds=kinds)
+        index: dict = {}  # templates in order of appearance
+        Ps, Ts, links, parts, boxes, kind = [], [], [], [], [], []
         for g in table.groups:
             T = table.prim_T[g.prim]
             if g.geom is RectRing:
                 sizes, offs = _rect_ring_boxes(g.P)
                 Tb = T.repeat(4, axis=0)
                 Tb[:, :3, 3] += np.einsum("kij,kj->ki", Tb[:, :3, :3], offs)
-                geom += [Cuboid] * len(sizes)
+                kind.append((index.setdefault(Cuboid, len(index)), len(sizes)))
                 Ps.append(sizes)
                 Ts.append(Tb)
                 links.append(np.repeat(g.link, 4))
                 parts.append(np.repeat(g.part, 4))
                 boxes.append(Cuboid.bounds_batch(sizes))
             else:
-                geom += [g.geom] * len(g.P)
+                kind.append((index.setdefault(g.geom, len(index)), len(g.P)))
                 Ps.append(g.P)
                 Ts.append(T)
                 links.append(g.link)
                 parts.append(g.part)
                 boxes.append(local[g.prim] if local is not None else g.geom.bounds_batch(g.P))
-        M = len(geom)
         width = max(P.shape[1] for P in Ps)
-        if len(Ps) == 1 and width == Ps[0].shape[1]:
+        one = len(Ps) == 1
+        if one and width == Ps[0].shape[1]:
             params = np.array(Ps[0], dtype=float)
             b = boxes[0]
         else:
-            params = np.zeros((M, width))
+            params = np.zeros((sum(len(P) for P in Ps), width))
             k = 0
             for P in Ps:
                 params[k:k + len(P), :P.shape[1]] = P
@@ -311,10 +363,17 @@ class Pieces:
             b = np.concatenate(boxes)
         center = 0.5 * (b[:, 0] + b[:, 1])
         half = 0.5 * (b[:, 1] - b[:, 0])
-        one = len(links) == 1
+        kinds = (list(index), np.repeat([k for k, _ in kind], [n for _, n in kind]).astype(np.int64))
         return cls(links[0] if one else np.concatenate(links), parts[0] if one else np.concatenate(parts),
-                   Ts[0] if one else np.concatenate(Ts), center, half, geom, params,
-                   [p.name for p in obj.parts], obj.part_link, rng)
+                   Ts[0] if one else np.concatenate(Ts), center, half, None, params, part_names, obj.part_link, rng,
+                   kinds=kinds)
+
+
+def _kernels_match() -> bool:
+    """:func:`artipg.validate.jit_base.kernels_match` (imported on first use: numba)."""
+    from artipg.validate.jit_base import kernels_match
+
+    return kernels_match()
 
 
 #: Small codes of the templates that get per-template flags (0: any other, meshes).
@@ -452,6 +511,7 @@ class _Layout(NamedTuple):
     start: list  # first patch index of each block
     one_per_comp: bool  # no component has two patches
     complete: bool  # every component has a patch
+    meta: np.ndarray  # the above as one int64 table (see artipg.validate.jit_samples)
 
 
 _LAYOUTS: dict = {}
@@ -467,10 +527,18 @@ def _layout(blocks, C: int) -> _Layout:
         patch = np.full(C, -1)
         patch[pcomp] = np.arange(len(pcomp))
         sizes = [len(b.comp) for b in blocks]
-        lay = _Layout(pcomp, patch, np.arange(len(blocks)).repeat(sizes), np.cumsum([0] + sizes[:-1]).tolist(),
-                      len(set(pcomp.tolist())) == len(pcomp), bool((patch >= 0).all()))
+        block = np.arange(len(blocks)).repeat(sizes)
+        one, complete = len(set(pcomp.tolist())) == len(pcomp), bool((patch >= 0).all())
+        meta = np.concatenate([[C, len(pcomp), len(blocks), one, complete], patch, pcomp, block,
+                               [_FAMILY_CODES[b.family] for b in blocks], [b.params.shape[1] for b in blocks],
+                               sizes]).astype(np.int64)
+        lay = _Layout(pcomp, patch, block, np.cumsum([0] + sizes[:-1]).tolist(), one, complete, meta)
         _LAYOUTS[key] = lay
     return lay
+
+
+#: Family codes of :attr:`_Layout.meta`, in :data:`artipg.geometry.patches.FAMILIES` order.
+_FAMILY_CODES = {"rect": 0, "tri": 1, "sector": 2, "band": 3, "zone": 4, "torus": 5}
 
 
 def _family(b, patch, row, rng) -> np.ndarray:
