@@ -19,7 +19,11 @@ import math
 import numba
 import numpy as np
 
+from artipg.annotate import points
 from artipg.annotate.points import FAMILY_CODE
+from artipg.kernel_cache import drop_stale_caches
+
+drop_stale_caches(__file__, [points.__file__])  # FAMILY_CODE is compiled in
 
 _TORUS = FAMILY_CODE["torus"]
 assert _TORUS == len(FAMILY_CODE) - 1, "the torus family must be drawn last (its draws follow the others')"

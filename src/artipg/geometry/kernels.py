@@ -27,6 +27,7 @@ loading these kernels from numba's cache another tenth of a second.
 from __future__ import annotations
 
 import math
+import sys
 
 import numba
 import numpy as np
@@ -36,6 +37,11 @@ from artipg.geometry.box import _BOX_TABLE, _RING_SIDES, _RING_TABLE, Cuboid, Re
 from artipg.geometry.patches import FAMILIES
 from artipg.geometry.prism import MAX_SIDES, Prism, TriPrism
 from artipg.geometry.revolve import _FRUSTUM_CAPS, _QUARTERS, _RING_CAPS, Frustum, Ring, Sphere, Torus
+from artipg.kernel_cache import drop_stale_caches
+
+# the kernels compile in constants of these modules
+drop_stale_caches(__file__, [sys.modules[f"artipg.geometry.{m}"].__file__ for m in ("base", "box", "patches", "prism",
+                                                                                     "revolve")])
 
 #: Template -> code used by the kernels; a template not listed takes the numpy path.
 CODES = {Cuboid: 0, RectRing: 1, Frustum: 2, Ring: 3, Sphere: 4, Torus: 5, Prism: 6, TriPrism: 7}

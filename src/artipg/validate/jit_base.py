@@ -14,9 +14,8 @@ against the kernels' versions before any kernel that relies on them runs:
 
 Where a probe fails, the checks run the numpy code instead (slower, same results).
 
-numba invalidates a kernel's disk cache only when the file defining it changes, not
-when a function it calls from another module does: every kernel module passes the
-modules its kernels use to :func:`drop_stale_caches` when imported.
+Every kernel module passes the modules its kernels use to
+:func:`artipg.kernel_cache.drop_stale_caches` when imported.
 
 This module imports numba: import it lazily (``import artipg`` stays light).
 """
@@ -24,33 +23,11 @@ This module imports numba: import it lazily (``import artipg`` stays light).
 from __future__ import annotations
 
 import math
-import os
 
 import numba
 import numpy as np
 from numba import types
 from numba.extending import intrinsic
-
-
-def drop_stale_caches(module_file: str, deps: list) -> None:
-    """Remove the numba cache indexes of the kernels of ``module_file`` (in its
-    ``__pycache__``) that are older than one of the modules ``deps`` (their files)
-    whose functions or constants they compiled in: numba then compiles them again."""
-    folder = os.path.join(os.path.dirname(module_file), "__pycache__")
-    try:
-        names = os.listdir(folder)
-    except OSError:
-        return
-    newest = max(os.stat(d).st_mtime for d in deps)
-    stem = os.path.splitext(os.path.basename(module_file))[0] + "."
-    for name in names:
-        if name.startswith(stem) and name.endswith(".nbi"):
-            path = os.path.join(folder, name)
-            try:
-                if os.stat(path).st_mtime < newest:
-                    os.remove(path)
-            except OSError:  # another process got there first
-                pass
 
 
 @intrinsic

@@ -25,11 +25,12 @@ import numpy as np
 from artipg.geometry.box import Cuboid
 from artipg.geometry.prism import MAX_SIDES, Prism, TriPrism
 from artipg.geometry.revolve import Frustum, Ring, Sphere, Torus
+from artipg.kernel_cache import drop_stale_caches
 from artipg.validate.jit_base import apply, apply_t, clip01, kernels_match, vmax, vmin
 from artipg.validate.kinematics import rigid_inverse
 from artipg.validate import jit_base
 
-jit_base.drop_stale_caches(__file__, [jit_base.__file__, sys.modules[Prism.__module__].__file__])
+drop_stale_caches(__file__, [jit_base.__file__, sys.modules[Prism.__module__].__file__])
 
 #: SDF codes of the templates the kernels evaluate (0: none of them: a mesh piece).
 SDF_CODES = {Cuboid: 1, Frustum: 2, Ring: 3, Sphere: 4, Torus: 5, Prism: 6, TriPrism: 7}

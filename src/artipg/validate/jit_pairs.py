@@ -19,9 +19,10 @@ from __future__ import annotations
 import numba
 import numpy as np
 
+from artipg.kernel_cache import drop_stale_caches
 from artipg.validate.kinematics import _SKEW, _SKEW_SIGN
 from artipg.validate import kinematics
-from artipg.validate.jit_base import copy4, drop_stale_caches
+from artipg.validate.jit_base import copy4
 
 drop_stale_caches(__file__, [kinematics.__file__])
 

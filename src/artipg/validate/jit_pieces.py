@@ -15,10 +15,11 @@ import numba
 import numpy as np
 
 from artipg.geometry.box import Cuboid, RectRing
+from artipg.kernel_cache import drop_stale_caches
 from artipg.validate.jit_base import apply, copy4
 from artipg.validate import jit_base
 
-jit_base.drop_stale_caches(__file__, [jit_base.__file__])
+drop_stale_caches(__file__, [jit_base.__file__])
 
 
 def pieces_arrays(table, local):

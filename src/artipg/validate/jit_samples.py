@@ -20,18 +20,21 @@ This module imports numba: import it lazily (``import artipg`` stays light).
 from __future__ import annotations
 
 import math
+import sys
 
 import numba
 import numpy as np
 
 from artipg.geometry.box import _BOX_TABLE, Cuboid
 from artipg.geometry.revolve import _FRUSTUM_CAPS, _RING_CAPS, Frustum, Ring, Sphere, Torus
+from artipg.kernel_cache import drop_stale_caches
 from artipg.validate.jit_base import fma, kernels_match, vmax
 from artipg.validate.shapes import _BOX_FEATURES, DENSITY, MAX_PER_COMPONENT, MIN_PER_COMPONENT, _layout
 from artipg.validate.streams import _CAP, _buffer
 from artipg.validate import jit_base
 
-jit_base.drop_stale_caches(__file__, [jit_base.__file__])
+drop_stale_caches(__file__, [jit_base.__file__, sys.modules[Cuboid.__module__].__file__,
+                              sys.modules[Frustum.__module__].__file__, sys.modules[_layout.__module__].__file__])
 
 _TWO_PI = 2.0 * np.pi
 _TORUS = 5  # family code (shapes._FAMILY_CODES)

@@ -23,12 +23,13 @@ import math
 import numba
 import numpy as np
 
+from artipg.kernel_cache import drop_stale_caches
 from artipg.validate.jit_base import copy4, matmul4, rigid_inverse, set_identity
 from artipg.validate.jit_pairs import _overlap, close_pairs, grow, sweep_pairs, turns_in_place
 from artipg.validate.kinematics import _SKEW, _SKEW_SIGN
 from artipg.validate import jit_base, jit_pairs, kinematics
 
-jit_base.drop_stale_caches(__file__, [jit_base.__file__, jit_pairs.__file__, kinematics.__file__])
+drop_stale_caches(__file__, [jit_base.__file__, jit_pairs.__file__, kinematics.__file__])
 
 
 def scenes(kin, pieces, tol, overlap: float):
