@@ -76,11 +76,20 @@ def draw_group(geom, P: np.ndarray, seed: int, key: int, want: np.ndarray | None
     q = blocks[0].params.ravel() if len(blocks) == 1 else np.concatenate([b.params.ravel() for b in blocks])
     area = _EMPTY if direct else np.concatenate([np.ravel(b.area) for b in blocks])
     want = np.ones(len(P), dtype=np.bool_) if want is None else want
+    return _on_stream(seed, key, lambda buf: _draw(comp_area, P, want, lay.meta, q, area, buf, direct,
+                                                   geom is Cuboid, DENSITY, MIN_PER_COMPONENT, MAX_PER_COMPONENT,
+                                                   _BOX_FEATURES))
+
+
+def _on_stream(seed: int, key: int, kernel):
+    """``kernel(buf)`` on the cached uniforms ``buf`` of sample stream (seed, key),
+    lengthened until the kernel's draws fit: ``(points, counts)``, or None past the
+    cache's cap. ``kernel`` returns ``(points, counts, short)`` with ``short`` 0 or
+    the stream length it needs."""
     size = 4096
     while True:
         buf = _buffer(seed, key, size)
-        out, per, short = _draw(comp_area, P, want, lay.meta, q, area, buf, direct, geom is Cuboid, DENSITY,
-                                MIN_PER_COMPONENT, MAX_PER_COMPONENT, _BOX_FEATURES)
+        out, per, short = kernel(buf)
         if not short:
             return out, per
         size = max(short, 2 * len(buf))
@@ -349,17 +358,10 @@ def draw_template(geom, P: np.ndarray, seed: int, key: int, want: np.ndarray | N
     their numpy ``component_areas`` and ``patches``: the kernel computes both (bit
     for bit; needs :func:`artipg.validate.jit_base.kernels_match`)."""
     want = np.ones(len(P), dtype=np.bool_) if want is None else want
-    size = 4096
-    while True:
-        buf = _buffer(seed, key, size)
-        out, per, short = _draw_template(TEMPLATE_CODES[geom], P, np.arange(len(P)), want, buf, DENSITY,
-                                         MIN_PER_COMPONENT, MAX_PER_COMPONENT, _BOX_FEATURES, _BOX_TABLE,
-                                         _FRUSTUM_CAPS, _RING_CAPS, _BLOCK, _FAM)
-        if not short:
-            return out, per
-        size = max(short, 2 * len(buf))
-        if size > _CAP:
-            return None
+    code, rows = TEMPLATE_CODES[geom], np.arange(len(P))
+    return _on_stream(seed, key, lambda buf: _draw_template(code, P, rows, want, buf, DENSITY, MIN_PER_COMPONENT,
+                                                            MAX_PER_COMPONENT, _BOX_FEATURES, _BOX_TABLE,
+                                                            _FRUSTUM_CAPS, _RING_CAPS, _BLOCK, _FAM))
 
 
 @numba.njit(cache=True)
