@@ -119,10 +119,7 @@ def _draw(comp_area, P, want, meta, q, area, buf, direct, box, density, lo, hi, 
         for c in range(C):
             a = comp_area[r, c]
             if a > 0.0:
-                x = np.ceil(a * density)
-                x = x if x >= lo else float(lo)
-                x = x if x <= hi else float(hi)
-                n[r, c] = int(x)
+                n[r, c] = _sample_count(a, density, lo, hi)
                 per[r] += n[r, c]
         if per[r]:
             used[r] = U
@@ -247,26 +244,16 @@ def _draw(comp_area, P, want, meta, q, area, buf, direct, box, density, lo, hi, 
             # artipg.geometry.patches.torus_tube_angles: rejection rounds over the
             # samples still to place, then one angle per sample along the arc
             v = np.empty(k)
-            todo = np.arange(k)
-            nt = k
-            while nt:
-                if pos + 2 * nt > len(buf):
-                    return out, per, pos + 2 * nt + 4 * N
-                m = 0
-                for t in range(nt):
-                    jj = todo[t]
-                    i = sel[jj]
-                    base = qoff[b] + (which[i] - bstart[b]) * stride + used[srow[i]]
-                    R = q[base]
-                    rr = q[base + U]
-                    cand = buf[pos + t] * _TWO_PI
-                    if buf[pos + nt + t] * (R + rr) <= R + rr * math.cos(cand):
-                        v[jj] = cand
-                    else:
-                        todo[m] = jj
-                        m += 1
-                pos += 2 * nt
-                nt = m
+            Rs = np.empty(k)
+            rs = np.empty(k)
+            for jj in range(k):
+                i = sel[jj]
+                base = qoff[b] + (which[i] - bstart[b]) * stride + used[srow[i]]
+                Rs[jj] = q[base]
+                rs[jj] = q[base + U]
+            pos = _tube_angles(Rs, rs, buf, pos, v)
+            if pos < 0:
+                return out, per, -pos + 4 * N
             if pos + k > len(buf):
                 return out, per, pos + k + 4 * N
             for j in range(k):
@@ -285,6 +272,42 @@ def _draw(comp_area, P, want, meta, q, area, buf, direct, box, density, lo, hi, 
                     out[2, o] = rr * math.sin(v[j])
             pos += k
     return _box_points(out, per, want, off, F, feat, P, np.arange(M)), per, 0
+
+
+@numba.njit(cache=True)
+def _sample_count(a, density, lo, hi):
+    """Samples of a surface component of area ``a``: ``ceil(a * density)`` clipped to
+    [lo, hi], as :func:`artipg.validate.shapes._sample_group` counts them."""
+    x = np.ceil(a * density)
+    x = x if x >= lo else float(lo)
+    x = x if x <= hi else float(hi)
+    return int(x)
+
+
+@numba.njit(cache=True)
+def _tube_angles(Rs, rs, buf, pos, out):
+    """:func:`artipg.geometry.patches.torus_tube_angles` on the uniforms ``buf[pos:]``:
+    rejection rounds over the samples still to place (centre-line radii ``Rs``, tube
+    radii ``rs`` (k,)), writing their tube angles into ``out`` (k,). Returns the stream
+    position after the rounds, or minus the length they need when ``buf`` is too short."""
+    k = len(Rs)
+    todo = np.arange(k)
+    nt = k
+    while nt:
+        if pos + 2 * nt > len(buf):
+            return -(pos + 2 * nt)
+        m = 0
+        for t in range(nt):
+            i = todo[t]
+            cand = buf[pos + t] * _TWO_PI
+            if buf[pos + nt + t] * (Rs[i] + rs[i]) <= Rs[i] + rs[i] * math.cos(cand):
+                out[i] = cand
+            else:
+                todo[m] = i
+                m += 1
+        pos += 2 * nt
+        nt = m
+    return pos
 
 
 @numba.njit(cache=True)
@@ -475,10 +498,7 @@ def _draw_template(code, P, rows, want, buf, density, lo, hi, feat, box_t, frust
         for c in range(C):
             a = area[c]
             if a > 0.0:
-                x = np.ceil(a * density)
-                x = x if x >= lo else float(lo)
-                x = x if x <= hi else float(hi)
-                n[r, c] = int(x)
+                n[r, c] = _sample_count(a, density, lo, hi)
                 per[r] += n[r, c]
         N += per[r]
     F = len(feat) if code == 1 else 0
@@ -514,22 +534,9 @@ def _draw_template(code, P, rows, want, buf, density, lo, hi, feat, box_t, frust
                 for _ in range(n[r, 0]):
                     Rs[t], rs[t] = P[rows[r], 0], P[rows[r], 1]
                     t += 1
-            todo = np.arange(k)
-            nt = k
-            while nt:
-                if pos + 2 * nt > len(buf):
-                    return out, per, pos + 2 * nt + 4 * N
-                m = 0
-                for t in range(nt):
-                    i = todo[t]
-                    cand = buf[pos + t] * _TWO_PI
-                    if buf[pos + nt + t] * (Rs[i] + rs[i]) <= Rs[i] + rs[i] * math.cos(cand):
-                        tube[i] = cand
-                    else:
-                        todo[m] = i
-                        m += 1
-                pos += 2 * nt
-                nt = m
+            pos = _tube_angles(Rs, rs, buf, pos, tube)
+            if pos < 0:
+                return out, per, -pos + 4 * N
             bpos[b] = pos  # then one angle per sample along the arc
             pos += k
         else:
