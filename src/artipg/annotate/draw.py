@@ -26,7 +26,8 @@ from artipg.kernel_cache import drop_stale_caches
 drop_stale_caches(__file__, [points.__file__])  # FAMILY_CODE is compiled in
 
 _TORUS = FAMILY_CODE["torus"]
-assert _TORUS == len(FAMILY_CODE) - 1, "the torus family must be drawn last (its draws follow the others')"
+if _TORUS != len(FAMILY_CODE) - 1:
+    raise RuntimeError("the torus family must be the last in FAMILIES: its draws follow the others'")
 
 
 @numba.njit(cache=True, nogil=True)
