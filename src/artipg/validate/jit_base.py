@@ -164,3 +164,16 @@ def kernels_match() -> bool:
                 (trig[0], np.cos(q)), (trig[1], np.sin(q)), (trig[2], np.hypot(q, q[::-1]))]
         _MATCH.append(all(a.tobytes() == np.ascontiguousarray(b).tobytes() for a, b in same))
     return _MATCH[0]
+
+
+@numba.njit(cache=True)
+def box_near(R, cs, hs, ct, ht, m):
+    """Whether the box (centre ``cs``, half extents ``hs``) moved by frame ``R`` (4, 4)
+    comes within ``m`` of the box (``ct``, ``ht``) on every axis of the latter's frame."""
+    ok = True
+    for r in range(3):
+        c = R[r, 0] * cs[0] + R[r, 1] * cs[1] + R[r, 2] * cs[2] + R[r, 3]
+        e = abs(R[r, 0]) * hs[0] + abs(R[r, 1]) * hs[1] + abs(R[r, 2]) * hs[2]
+        if not (abs(c - ct[r]) - e - ht[r] <= m):
+            ok = False
+    return ok

@@ -26,7 +26,7 @@ from artipg.geometry.box import Cuboid
 from artipg.geometry.prism import MAX_SIDES, Prism, TriPrism
 from artipg.geometry.revolve import Frustum, Ring, Sphere, Torus
 from artipg.kernel_cache import drop_stale_caches
-from artipg.validate.jit_base import apply, apply_t, clip01, kernels_match, vmax, vmin
+from artipg.validate.jit_base import apply, apply_t, box_near, clip01, kernels_match, vmax, vmin
 from artipg.validate.kinematics import rigid_inverse
 from artipg.validate import jit_base
 
@@ -177,14 +177,7 @@ def _cull(src, tgt, rel, center, half, m):
     keep = np.empty(n, dtype=np.bool_)
     for j in range(n):
         s, t = src[j], tgt[j]
-        mj = m[j % k]
-        ok = True
-        for r in range(3):
-            c = rel[j, r, 0] * center[s, 0] + rel[j, r, 1] * center[s, 1] + rel[j, r, 2] * center[s, 2] + rel[j, r, 3]
-            e = abs(rel[j, r, 0]) * half[s, 0] + abs(rel[j, r, 1]) * half[s, 1] + abs(rel[j, r, 2]) * half[s, 2]
-            if not (abs(c - center[t, r]) - e - half[t, r] <= mj):
-                ok = False
-        keep[j] = ok
+        keep[j] = box_near(rel[j], center[s], half[s], center[t], half[t], m[j % k])
     return keep
 
 

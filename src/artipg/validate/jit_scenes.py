@@ -24,7 +24,7 @@ import numba
 import numpy as np
 
 from artipg.kernel_cache import drop_stale_caches
-from artipg.validate.jit_base import copy4, matmul4, rigid_inverse, set_identity
+from artipg.validate.jit_base import box_near, copy4, matmul4, rigid_inverse, set_identity
 from artipg.validate.jit_pairs import _overlap, close_pairs, grow, sweep_pairs, turns_in_place
 from artipg.validate.kinematics import _SKEW, _SKEW_SIGN
 from artipg.validate import jit_base, jit_pairs, kinematics
@@ -296,14 +296,7 @@ def build(parent, origin, jtype, axis, limits, movable, link, part, T, center, h
         matmul4(tmp, WB[r], rel[n_other + k])
     for j in range(2 * n_other):
         s, t = src[j], tgt[j]
-        m = margin[other[j % n_other]]
-        ok = True
-        for r in range(3):
-            cj = rel[j, r, 0] * center[s, 0] + rel[j, r, 1] * center[s, 1] + rel[j, r, 2] * center[s, 2] + rel[j, r, 3]
-            e = abs(rel[j, r, 0]) * half[s, 0] + abs(rel[j, r, 1]) * half[s, 1] + abs(rel[j, r, 2]) * half[s, 2]
-            if not (abs(cj - center[t, r]) - e - half[t, r] <= m):
-                ok = False
-        keep[j] = ok
+        keep[j] = box_near(rel[j], center[s], half[s], center[t], half[t], margin[other[j % n_other]])
     return (W0, c0, h0, A, B, WA, WB, margin, sizes, sw_scene, sw_joint, sw_q, box, ball, other, src, tgt, rel,
             keep)
 
