@@ -27,7 +27,7 @@ from artipg.rules import Category, Slot
 from artipg.templates.appliance import appliance_housing, control_panel, display
 from artipg.templates.bodies import carcass
 from artipg.templates.cells import add_door, add_drawer
-from artipg.templates.controls import BUTTONS, KNOBS, mount_button_row, mount_knob
+from artipg.templates.controls import BUTTONS, KNOBS, mount_button_row, mount_knob, mount_poses
 from artipg.templates.handles import arch_handle, bar_handle, edge_pull, flat_bar_handle
 from artipg.templates.panels import box_drawer, glass_door, slab_door
 from artipg.templates.racks import oven_rack
@@ -173,8 +173,8 @@ def _controls(ctx, root, panel):
         pitch = 2 * r + 0.025
         spots = [(s * (w / 2 - 0.05 - r - (i // 2) * pitch), 0.0) for i, s in zip(range(n), (-1, 1, -1))]
     knob = ctx.choose("knob", KNOBS)
-    for i, (y, z) in enumerate(spots):
-        mount_knob(ctx.builder, root, knob(p.scope(f"knob{i}"), radius=r), pose @ translation(0, y, z), continuous=True)
+    for i, T in enumerate(mount_poses(pose, spots)):
+        mount_knob(ctx.builder, root, knob(p.scope(f"knob{i}"), radius=r), T, continuous=True)
     if kind == "column" or burners:
         return
     lo, hi = -w / 2 + 0.05 + (2 * r + 0.025) * (1 + (n > 2)) + 0.02, w / 2 - 0.05 - 2 * r - 0.045
