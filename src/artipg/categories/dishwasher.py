@@ -119,7 +119,8 @@ def _controls(ctx, parent, pose, W, band, ctrl):
     tmpl = ctx.choose("button", BUTTONS)
     size = min(0.02, band - 0.02)
     n = p.integers("buttons", 2, max(2, min(6, int((hi - lo) / (size + 0.014)))))
-    mount_button_row(p, ctx.builder, parent, tmpl, n, pose, lo, hi, 0.0, radius=size / 2 * 0.8, square=(size, 0.7 * size))
+    mount_button_row(p, ctx.builder, parent, tmpl, n, pose, lo, hi, 0.0, radius=size / 2 * 0.8,
+                     square=(size, 0.7 * size))
 
 
 def racks(ctx):

@@ -236,7 +236,8 @@ def mount_keypad(builder, parent, key: Part, pose: np.ndarray, rows: int, cols: 
     metres; row 0 is the top row. Returns the button links, row by row.
     """
     links = []
-    grid = [((c - (cols - 1) / 2) * pitch[0], ((rows - 1) / 2 - r) * pitch[1]) for r in range(rows) for c in range(cols)]
+    grid = [((c - (cols - 1) / 2) * pitch[0], ((rows - 1) / 2 - r) * pitch[1])
+            for r in range(rows) for c in range(cols)]
     for T in mount_poses(pose, grid):
         if collar is not None:
             parent.add(_copy(collar), T)

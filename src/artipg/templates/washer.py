@@ -101,8 +101,8 @@ def drum(p, radius: float, length: float, axle: float) -> Part:
     prims = [ring(radius, radius - w, length, pose=translation(length / 2, 0, 0) @ _ALONG_X, role="wall"),
              cylinder(radius, w, translation(length - w / 2, 0, 0) @ _ALONG_X, role="wall"),
              cylinder(0.025, axle, translation(length + axle / 2, 0, 0) @ _ALONG_X, role="axle")]
-    for i in range(3):
-        prims.append(cuboid(length - w, 0.02, lh, _THIRDS[i] @ translation(length / 2, 0, radius - w - lh / 2), role="lifter"))
+    prims += [cuboid(length - w, 0.02, lh, R @ translation(length / 2, 0, radius - w - lh / 2), role="lifter")
+              for R in _THIRDS]
     return Part("body", "drum", prims, regions={"rotate": Region(("wall",))})
 
 
