@@ -142,3 +142,48 @@ def test_control_poses_are_the_translation_products():
                                  button(ParamRecorder(np.random.default_rng(seed))))
             depth = -bezel.anchors["front"][0]
             assert bezel.primitives[0].pose.tobytes() == (translation(-depth / 2, 0, 0) @ _ALONG_X).tobytes()
+
+
+def test_mount_poses_are_the_translation_products():
+    from artipg.geometry.transforms import rot_x, rot_y, translation
+    from artipg.templates.controls import mount_poses
+
+    rng = np.random.default_rng(1)
+    for seed in range(200):
+        pose = translation(*rng.uniform(-1, 1, 3)) @ rot_y(rng.uniform(-3, 3)) @ rot_x(rng.uniform(-3, 3))
+        if seed % 4 == 0:
+            pose = translation(*rng.uniform(-1, 1, 3))
+        n = int(rng.integers(0, 40))  # past the precomputed identity stack too
+        yz = [(float(y), float(z)) for y, z in rng.uniform(-0.3, 0.3, (n, 2))]
+        if n and seed % 3 == 0:
+            yz[0] = (0.0, -0.0)
+        got = mount_poses(pose, yz)
+        assert len(got) == n
+        for T, (y, z) in zip(got, yz):
+            assert T.tobytes() == (pose @ translation(0, y, z)).tobytes()
+
+
+def test_door_edge_grasps_are_the_edge_grasps():
+    from artipg.templates.panels import door_edge_grasps, edge_grasp
+
+    rng = np.random.default_rng(2)
+    for t, w, h in rng.uniform(0.005, 1.0, (300, 3)):
+        want = [edge_grasp(t, w / 2, 0.0, 1.0, 0.0), edge_grasp(t, -w / 2, 0.0, -1.0, 0.0),
+                edge_grasp(t, 0.0, h / 2, 0.0, 1.0), edge_grasp(t, 0.0, -h / 2, 0.0, -1.0)]
+        for g, e in zip(door_edge_grasps(t, w, h), want):
+            assert g.pose.tobytes() == e.pose.tobytes()
+            assert g.width == e.width and g.open_dir.tobytes() == e.open_dir.tobytes()
+
+
+def test_keypad_copies_are_dataclass_replacements():
+    from dataclasses import fields, replace
+
+    from artipg.templates.controls import BUTTONS, _copy, button_bezel
+
+    for button in BUTTONS:
+        key = button(ParamRecorder(np.random.default_rng(3)))
+        for part in (key, button_bezel(ParamRecorder(np.random.default_rng(4)), key)):
+            got, want = _copy(part), replace(part)
+            assert got is not part
+            for f in fields(part):
+                assert getattr(got, f.name) is getattr(want, f.name), f.name

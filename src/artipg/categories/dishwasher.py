@@ -26,7 +26,7 @@ from artipg.rules import Category, Slot
 from artipg.templates.appliance import control_panel, display
 from artipg.templates.bodies import carcass
 from artipg.templates.cells import add_door, choose
-from artipg.templates.controls import BUTTONS, KNOBS, button_bezel, mount_button, mount_knob
+from artipg.templates.controls import BUTTONS, KNOBS, mount_button_row, mount_knob
 from artipg.templates.handles import arch_handle, bar_handle, edge_pull, flat_bar_handle
 from artipg.templates.mounting import mount_sliding
 from artipg.templates.panels import framed_door, slab_door
@@ -42,6 +42,7 @@ SUBS = {
 }
 HANDLES = {bar_handle: 2.0, flat_bar_handle: 2.0, arch_handle: 1.5, edge_pull: 1.0}
 PANEL_DOORS = {slab_door: 1.0, framed_door: 1.0}  # integrated models take the kitchen's door panel
+_UP = rot_y(math.pi / 2)  # controls on the door's top edge: the panel's outward normal (-x) -> +z
 
 
 def body(ctx):
@@ -91,7 +92,7 @@ def door(ctx):
     if ctrl == "door_front":
         panel_pose, parent = dp.pose @ translation(-t, 0, hd - cs / 2), link
     elif ctrl == "door_top":
-        panel_pose, parent = dp.pose @ translation(-t / 2, 0, hd) @ rot_y(math.pi / 2), link
+        panel_pose, parent = dp.pose @ translation(-t / 2, 0, hd) @ _UP, link
     else:
         parent = root
     _controls(ctx, parent, panel_pose, W, cs if ctrl != "door_top" else t, ctrl)
@@ -118,15 +119,8 @@ def _controls(ctx, parent, pose, W, band, ctrl):
     tmpl = ctx.choose("button", BUTTONS)
     size = min(0.02, band - 0.02)
     n = p.integers("buttons", 2, max(2, min(6, int((hi - lo) / (size + 0.014)))))
-    for i in range(n):
-        q = p.scope(f"button{i}")
-        if tmpl.__name__ == "round_button":
-            b = tmpl(q, radius=size / 2 * 0.8)
-        else:
-            b = tmpl(q, width=size, height=0.7 * size)
-        T = pose @ translation(0, lo + (hi - lo) * (i + 0.5) / n, 0)
-        parent.add(button_bezel(q.scope("bezel"), b, gap=0.0006), T)
-        mount_button(ctx.builder, parent, b, T)
+    mount_button_row(p, ctx.builder, parent, tmpl, n, pose, lo, hi, 0.0, radius=size / 2 * 0.8,
+                     square=(size, 0.7 * size))
 
 
 def racks(ctx):

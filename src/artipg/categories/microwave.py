@@ -59,7 +59,7 @@ def door(ctx):
     root, part, pose, (W, D, H, fh, z_top, t) = ctx.out["body"]
     p = ctx.p
     gap = p.uniform("gap", 0.002, 0.004)
-    y0, y1 = part.anchor("bay_hi")[1] + gap, W / 2  # door spans the cavity side of the front
+    y0, y1 = part.anchors["bay_hi"][1] + gap, W / 2  # door spans the cavity side of the front
     size = (y1 - y0, z_top - fh - 2 * gap)
     centre = ((y0 + y1) / 2, (z_top + fh) / 2)
     tmpl = ctx.choose("door", DOORS)
@@ -78,7 +78,7 @@ def panel(ctx):
     root, part, pose, (W, D, H, fh, z_top, t) = ctx.out["body"]
     p, b, sub = ctx.p, ctx.builder, ctx.sub
     *_, (k_lo, k_hi), (r_lo, r_hi) = SIZES[sub]
-    y0, y1 = -W / 2, part.anchor("bay_hi")[1] - p.uniform("gap", 0.002, 0.004)
+    y0, y1 = -W / 2, part.anchors["bay_hi"][1] - p.uniform("gap", 0.002, 0.004)
     pw, ph, pc = y1 - y0, z_top - fh, ((y0 + y1) / 2, (z_top + fh) / 2)
     m = p.uniform("margin", 0.012, 0.02)
     rows, n_knobs, release = p.integers("rows", r_lo, r_hi), p.integers("knobs", k_lo, k_hi), not ctx.out["door"]
@@ -136,7 +136,7 @@ def table(ctx):
     root, part, pose, _ = ctx.out["body"]
     if not ctx.p.flag("turntable", 0.75):
         return
-    lo, hi = pose @ [*part.anchor("cavity_lo"), 1.0], pose @ [*part.anchor("cavity_hi"), 1.0]
+    lo, hi = (pose @ [*part.anchors["cavity_lo"], 1.0]).tolist(), (pose @ [*part.anchors["cavity_hi"], 1.0]).tolist()
     r = min(hi[0] - lo[0], hi[1] - lo[1]) / 2 - ctx.p.uniform("margin", 0.01, 0.03)
     link = ctx.builder.create_link("turntable", root)
     link.set_joint("continuous", translation((lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, lo[2]))

@@ -27,7 +27,7 @@ from artipg.rules import Category, Slot
 from artipg.templates.appliance import appliance_housing, control_panel, display
 from artipg.templates.bodies import carcass
 from artipg.templates.cells import add_door, add_drawer
-from artipg.templates.controls import BUTTONS, KNOBS, mount_button_row, mount_knob
+from artipg.templates.controls import BUTTONS, KNOBS, mount_button_row, mount_knob, mount_poses
 from artipg.templates.handles import arch_handle, bar_handle, edge_pull, flat_bar_handle
 from artipg.templates.panels import box_drawer, glass_door, slab_door
 from artipg.templates.racks import oven_rack
@@ -63,7 +63,7 @@ def _countertop(ctx, root, W, H, D):
     root.add(bun_feet(p.scope("feet"), 0.9 * D, 0.9 * W, zf))
     hs = appliance_housing(p, D, W, H - zf, bay, "-y")
     root.add(hs, translation(0, 0, (H + zf) / 2))
-    lo, hi = hs.anchor("cavity_lo"), hs.anchor("cavity_hi")
+    lo, hi = hs.anchors["cavity_lo"], hs.anchors["cavity_hi"]
     z = (H + zf) / 2 + 0.3 * (hi[2] - lo[2]) * p.uniform("rack_z", -1, 0)
     _rack(p.scope("rack0"), root, lo[0], hi[0], lo[1], hi[1], z)
     y0 = -W / 2 + bay
@@ -71,7 +71,7 @@ def _countertop(ctx, root, W, H, D):
     pose = translation(-D / 2, y0 - bay / 2 - gap / 2, (H + zf) / 2)
     root.add(cp, pose)
     return {"t": p.uniform("door_thickness", 0.02, 0.03), "doors": [(y0 + gap, W / 2, zf, H)],
-            "panel": ("column", pose @ translation(*cp.anchor("front")), bay - gap, H - zf, 0)}
+            "panel": ("column", pose @ translation(*cp.anchors["front"]), bay - gap, H - zf, 0)}
 
 
 def _cooktop(ctx, root, W, H, D):
@@ -79,14 +79,14 @@ def _cooktop(ctx, root, W, H, D):
     p = ctx.p
     n = p.choice("burners", (5, 6)) if W > 0.75 else 4
     cook = ctx.choose("cooktop", COOKTOPS)(p.scope("cooktop"), D, W, n)
-    zb = H - cook.anchor("surface")[2]
+    zb = H - cook.anchors["surface"][2]
     root.add(cook, translation(0, 0, zb))
     if not p.flag("backguard", 0.6):
         return zb, n, None
     bt, bh = p.uniform("backguard_depth", 0.02, 0.04), p.uniform("backguard_height", 0.06, 0.2)
     guard = cuboid_between((D / 2 - bt, -W / 2, H), (D / 2, W / 2, H + bh), role="panel")
     root.add(Part("panel", "backguard", [guard]))
-    return zb, n, (D / 2 - bt, H + cook.anchor("top")[2] - cook.anchor("surface")[2] + 0.004)
+    return zb, n, (D / 2 - bt, H + cook.anchors["top"][2] - cook.anchors["surface"][2] + 0.004)
 
 
 def body(ctx):
@@ -173,8 +173,8 @@ def _controls(ctx, root, panel):
         pitch = 2 * r + 0.025
         spots = [(s * (w / 2 - 0.05 - r - (i // 2) * pitch), 0.0) for i, s in zip(range(n), (-1, 1, -1))]
     knob = ctx.choose("knob", KNOBS)
-    for i, (y, z) in enumerate(spots):
-        mount_knob(ctx.builder, root, knob(p.scope(f"knob{i}"), radius=r), pose @ translation(0, y, z), continuous=True)
+    for i, T in enumerate(mount_poses(pose, spots)):
+        mount_knob(ctx.builder, root, knob(p.scope(f"knob{i}"), radius=r), T, continuous=True)
     if kind == "column" or burners:
         return
     lo, hi = -w / 2 + 0.05 + (2 * r + 0.025) * (1 + (n > 2)) + 0.02, w / 2 - 0.05 - 2 * r - 0.045

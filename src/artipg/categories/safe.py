@@ -87,14 +87,14 @@ def controls(ctx):
             pitch, g, reach = q.uniform("pitch", 0.013, 0.02), q.uniform("gap", 0.001, 0.0018), q.uniform(
                 "reach", 0.01, 0.014)
             key = rect_button(q.scope("key"), width=pitch - g, height=0.8 * pitch - g, reach=reach)
-            stand = -key.anchor("back")[0]  # the frame rises past the keys' back faces, g / 2 around them
+            stand = -key.anchors["back"][0]  # the frame rises past the keys' back faces, g / 2 around them
             frame, screen = keypad_housing(q, cols * pitch, rows * 0.8 * pitch, stand + 0.4 * (reach - stand), g / 2)
-            _, hw, lo = frame.anchor("corner")
-            hi = screen.anchor("top")[2]  # the housing spans -lo..hi about the key field's centre
+            _, hw, lo = frame.anchors["corner"]
+            hi = screen.anchors["top"][2]  # the housing spans -lo..hi about the key field's centre
             items.append((kind, hw, (lo + hi) / 2, (key, frame, screen, rows, cols, pitch, (hi - lo) / 2)))
         else:  # levers point towards the hinge
             h = ctx.choose("handle", HANDLES[ctx.sub])(q, side=s)
-            r = h.anchor("reach")[0] + 0.005
+            r = h.anchors["reach"][0] + 0.005
             items.append((kind, r, r, h))
     # a column towards the free edge, or a row across the door when it is short
     gap, W, H = 0.02, b["W"], b["H"]
@@ -102,7 +102,7 @@ def controls(ctx):
     k = 2 if column else 1
     cur = (sum(2 * it[k] for it in items) + gap * (len(items) - 1)) / 2
     yc = -s * p.uniform("offset", 0.0, 0.15) * W if column else 0.0
-    tf = -part.anchor("front")[0]
+    tf = -part.anchors["front"][0]
     for kind, hw, hh, obj in items:
         half = hh if column else hw
         y, z = (yc, cur - half) if column else (-s * (cur - half), 0.0)  # rows run from the free side

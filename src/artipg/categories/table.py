@@ -46,10 +46,10 @@ def top(ctx):
     w, d, h, *_ = SUBS[ctx.sub]
     W, D, H = p.uniform("width", *w), p.uniform("depth", *d), p.uniform("height", *h)
     part = ctx.choose("top", DESK_TOPS if ctx.sub == "desk" else TOPS)(p, D, W)
-    zu = H - part.anchor("surface")[2]
+    zu = H - part.anchors["surface"][2]  # the anchor tuples hold floats: no numpy scalars downstream
     root = ctx.builder.create_link("base")
     root.add(part, translation(0, 0, zu))
-    ax, ay, _ = part.anchor("apron")
+    ax, ay, _ = part.anchors["apron"]
     return root, zu, ax, ay
 
 
@@ -87,7 +87,7 @@ def _desk(ctx, root, zu, ax, ay, handle, drawer):
         root.add(body, translation(0, yc, zu / 2))
         rows = q.integers("rows", 1, 3)
         hs = np.array([q.uniform(f"row{r}", 0.6, 1.4) for r in range(rows)])
-        zb = kick + np.concatenate([[0.0], np.cumsum(hs / hs.sum())]) * (zu - kick - GAP)
+        zb = (kick + np.concatenate([[0.0], np.cumsum(hs / hs.sum())]) * (zu - kick - GAP)).tolist()
         wall = body.primitives[1].params[1]
         iy = (yc - wp / 2 + wall, yc + wp / 2 - wall)
         for r in range(rows):
@@ -152,12 +152,12 @@ def base(ctx):
     elif kind == "pedestal":
         col = column_base(p.scope("pedestal"), zu, 1.3 * min(ax, ay))
         root.add(col)
-        y_free, depth = ay - board - GAP, ax - col.anchor("column")[0] - GAP
+        y_free, depth = ay - board - GAP, ax - col.anchors["column"][0] - GAP
     else:
         tmpl = trestle_base if kind == "trestle" else panel_ends
         part = tmpl(p.scope(kind), 2 * ax, 2 * ay, zu)
         root.add(part)
-        y_free, depth = part.anchor("inner")[1] - GAP, 2 * ax - 2 * board - GAP
+        y_free, depth = part.anchors["inner"][1] - GAP, 2 * ax - 2 * board - GAP
     _apron_drawers(ctx, root, zu, ax, ay, y_free, depth, n_max, handle, drawer)
 
 

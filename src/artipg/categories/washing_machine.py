@@ -124,7 +124,7 @@ def _top_body(ctx, root, W, H, D, zk):
         bl.add(part)
         if not twin:
             imp = ctx.builder.create_link("arm", bl)
-            imp.set_joint("continuous", translation(*part.anchor("floor")))
+            imp.set_joint("continuous", translation(*part.anchors["floor"]))
             imp.add(ctx.choose("impeller", IMPELLERS)(q.scope("impeller"), 0.8 * (R - 0.01), 0.45 * hb))
     return root, ("top", W, H, D, zk, xb, xh, ch, xc, holes)
 

@@ -33,6 +33,7 @@ def _edge_frame(out_y: float, out_z: float) -> np.ndarray:
 
 # gripper frames for the four edges, built once (templates must stay cheap)
 _EDGE_FRAMES = {(sy, sz): _edge_frame(sy, sz) for sy, sz in ((1.0, 0.0), (-1.0, 0.0), (0.0, 1.0), (0.0, -1.0))}
+_EDGE_STACK = np.stack([_EDGE_FRAMES[e] for e in ((1.0, 0.0), (-1.0, 0.0), (0.0, 1.0), (0.0, -1.0))])
 _NO_DIR = np.zeros(3)
 _NO_DIR.flags.writeable = False
 
@@ -52,9 +53,15 @@ def edge_grasp(t: float, y: float, z: float, out_y: float, out_z: float, inset: 
 
 def door_edge_grasps(t: float, w: float, h: float) -> list[Grasp]:
     """Pinch grasps at the mid-points of the four edges of a front panel; the
-    annotation drops the one on the hinge edge, which cannot open it."""
-    return [edge_grasp(t, w / 2, 0.0, 1.0, 0.0), edge_grasp(t, -w / 2, 0.0, -1.0, 0.0),
-            edge_grasp(t, 0.0, h / 2, 0.0, 1.0), edge_grasp(t, 0.0, -h / 2, 0.0, -1.0)]
+    annotation drops the one on the hinge edge, which cannot open it.
+
+    The :func:`edge_grasp` of each edge (+y, -y, +z, -z), their poses filled in one array.
+    """
+    T = _EDGE_STACK.copy()
+    x, i = -t / 2, 0.01  # edge_grasp's inset
+    T[:, :3, 3] = ((x, w / 2 - i, 0.0), (x, -w / 2 + i, 0.0), (x, 0.0, h / 2 - i), (x, 0.0, -h / 2 + i))
+    g = t + 0.02
+    return [Grasp(T[0], g, _NO_DIR), Grasp(T[1], g, _NO_DIR), Grasp(T[2], g, _NO_DIR), Grasp(T[3], g, _NO_DIR)]
 
 
 def _front_regions(t, w, h, edge=0.25):

@@ -22,6 +22,7 @@ from artipg.geometry.transforms import rot_z, translation
 from artipg.model.part import Part, Region
 
 _SQRT_HALF = math.sqrt(0.5)
+_CROSS = (rot_z(math.pi / 4), rot_z(-math.pi / 4))  # the two bars of a cross foot
 
 
 def _top(template, prims, ax, ay, t):
@@ -113,8 +114,7 @@ def column_base(p, height: float, max_radius: float) -> Part:
         prims = [frustum(rf, rc * 1.2, fh, translation(0, 0, fh / 2), role="foot")]
     else:
         fw = p.uniform("foot_width", 0.04, 0.07)
-        prims = [cuboid(2 * rf, fw, fh, rot_z(a) @ translation(0, 0, fh / 2), role="foot")
-                 for a in (math.pi / 4, -math.pi / 4)]
+        prims = [cuboid(2 * rf, fw, fh, R @ translation(0, 0, fh / 2), role="foot") for R in _CROSS]
     prims.append(cylinder(rc, height - fh, translation(0, 0, fh + (height - fh) / 2), role="column"))
     return Part("base", "column_base", prims, anchors={"column": (rc, 0.0, 0.0)})
 

@@ -26,6 +26,10 @@ from artipg.geometry.transforms import rot_x, rot_y, rot_z, translation
 from artipg.model.part import Part, Region
 
 _ALONG_X = rot_y(math.pi / 2)  # local z -> +x
+_QUARTERS = tuple(rot_x(i * math.pi / 2) for i in range(4))  # the porthole's four corners
+_THIRDS = tuple(rot_x(2 * math.pi * i / 3) for i in range(3))  # the drum's three lifters
+# a fin star of n fins (agitators 3-4, pulsators 4-6): rot_z(2 pi i / n), i < n
+_STARS = {n: tuple(rot_z(2 * math.pi * i / n) for i in range(n)) for n in range(3, 7)}
 _S2 = math.sqrt(0.5)
 # tri prism frame for the (+y, +z) corner: base along (y, z) = (-1, 1), apex towards (1, 1)
 _CORNER = np.array([[0.0, 0.0, -1.0, 0.0], [-_S2, _S2, 0.0, 0.0], [_S2, _S2, 0.0, 0.0], [0.0, 0.0, 0.0, 1.0]])
@@ -39,7 +43,7 @@ def porthole_panel(p, width: float, height: float, hole: float, thickness: float
     k = hole * (math.sqrt(2) - 1)
     m = (hole + k) / 2
     for i in range(4):
-        T = rot_x(i * math.pi / 2) @ translation(-t / 2, m, m) @ _CORNER
+        T = _QUARTERS[i] @ translation(-t / 2, m, m) @ _CORNER
         prims.append(tri_prism(math.sqrt(2) * (hole - k), (hole - k) * _S2, 0.0, t, T, role="plate"))
     return Part("panel", "porthole_panel", prims, anchors={"front": (-t, 0.0, 0.0)})
 
@@ -97,9 +101,8 @@ def drum(p, radius: float, length: float, axle: float) -> Part:
     prims = [ring(radius, radius - w, length, pose=translation(length / 2, 0, 0) @ _ALONG_X, role="wall"),
              cylinder(radius, w, translation(length - w / 2, 0, 0) @ _ALONG_X, role="wall"),
              cylinder(0.025, axle, translation(length + axle / 2, 0, 0) @ _ALONG_X, role="axle")]
-    for i in range(3):
-        R = rot_x(2 * math.pi * i / 3)
-        prims.append(cuboid(length - w, 0.02, lh, R @ translation(length / 2, 0, radius - w - lh / 2), role="lifter"))
+    prims += [cuboid(length - w, 0.02, lh, R @ translation(length / 2, 0, radius - w - lh / 2), role="lifter")
+              for R in _THIRDS]
     return Part("body", "drum", prims, regions={"rotate": Region(("wall",))})
 
 
@@ -119,8 +122,7 @@ def agitator(p, radius: float, height: float) -> Part:
     n = p.integers("fins", 3, 4)
     fh = p.uniform("fin_height", 0.05, 0.1)
     prims = [frustum(0.45 * radius, 0.25 * radius, height, translation(0, 0, height / 2), role="post")]
-    prims += [cuboid(radius, 0.012, fh, rot_z(2 * math.pi * i / n) @ translation(radius / 2, 0, fh / 2), role="fin")
-              for i in range(n)]
+    prims += [cuboid(radius, 0.012, fh, R @ translation(radius / 2, 0, fh / 2), role="fin") for R in _STARS[n]]
     return Part("arm", "agitator", prims, regions={"rotate": Region(("post",))})
 
 
@@ -130,8 +132,8 @@ def pulsator(p, radius: float, height: float) -> Part:
     t = p.uniform("disc", 0.01, 0.02)
     rh = min(height, p.uniform("rib_height", 0.015, 0.03))
     prims = [cylinder(radius, t, translation(0, 0, t / 2), role="disc")]
-    prims += [cuboid(0.9 * radius, 0.012, rh, rot_z(2 * math.pi * i / n) @ translation(0.45 * radius, 0, t + rh / 2),
-                     role="fin") for i in range(n)]
+    prims += [cuboid(0.9 * radius, 0.012, rh, R @ translation(0.45 * radius, 0, t + rh / 2), role="fin")
+              for R in _STARS[n]]
     return Part("arm", "pulsator", prims, regions={"rotate": Region(("disc",))})
 
 
