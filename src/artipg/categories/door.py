@@ -83,7 +83,7 @@ def leaves(ctx):
     for i, side in enumerate(sides):  # a pair of doors has two identical leaves
         s = 1.0 if side == "+y" else -1.0
         cy = s * (d["Wo"] / 2 - d["ch"] - W / 2)
-        leaf, glass = replace(leaf0), glass0 and replace(glass0)
+        leaf, glass = (leaf0, glass0) if i == 0 else (replace(leaf0), glass0 and replace(glass0))
         link = mount_hinged(ctx.builder, root, leaf, front_x=t, center_yz=(cy, d["under"] + H / 2), size_yz=(W, H),
                             side=side, limits=(0.0, lim), name="leaf")
         if glass is not None:
