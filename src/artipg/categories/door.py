@@ -34,6 +34,8 @@ SIZES = {"single_door": ((1, 1), (0.7, 0.95), (1.95, 2.1)), "double_door": ((2, 
          "french_door": ((1, 2), (0.6, 0.9), (1.95, 2.1)), "barn_door": ((1, 1), (0.8, 1.1), (1.95, 2.15))}
 HANDLES = {**DOOR_LEVERS, **DOOR_KNOBS}
 PULLS = {arch_handle: 1.0, flat_bar_handle: 1.0}  # long barn-door pulls
+HALF_TURN = rot_z(math.pi)
+ALONG_X = rot_y(math.pi / 2)  # local z -> +x
 
 
 def glazed_leaf(p, width, height, thickness=None):
@@ -108,7 +110,7 @@ def hardware(ctx):
     for link, leaf, side, s in leaves:
         hy, _ = free_edge_yz(side, (d["W"], d["H"]), backset)
         front = leaf.pose @ translation(-d["t"], hy, hz)
-        back = leaf.pose @ translation(0.0, hy, hz) @ rot_z(math.pi)
+        back = leaf.pose @ translation(0.0, hy, hz) @ HALF_TURN
         for T in (front, back):
             mount_turning(ctx.builder, link, next(handles), T, lim, name="handle")
         if lock:
@@ -117,7 +119,7 @@ def hardware(ctx):
                           (0.0, math.pi / 2), name="thumb_turn")
             r = p.uniform("cylinder_radius", 0.014, 0.02)
             link.add(Part("handle", "key_cylinder", [cylinder(r, 0.008, front @ translation(0.004 - 0.008, 0, dz)
-                                                              @ rot_y(math.pi / 2), role="rose")]))
+                                                              @ ALONG_X, role="rose")]))
 
 
 def _barn(ctx, root, d):

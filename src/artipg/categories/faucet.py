@@ -35,6 +35,7 @@ SUBS = {
 SPOUTS = {"pull_out": {gooseneck_spout: 2.0, arc_spout: 1.0}, "gooseneck": {gooseneck_spout: 1.0}}  # else TOP_SPOUTS
 C = 0.006  # clearance between parts that move past each other
 SWIVELS = {"fixed": 1.0, "revolute": 1.0, "continuous": 0.6}
+QUARTER_TURN = rot_z(math.pi / 2)
 
 
 def base(ctx):
@@ -86,7 +87,7 @@ def levers(ctx):
     lv = side_lever(p)
     zm = -p.uniform("lever_drop", 0.012, 0.025)
     link = b.create_link("lever", root)
-    link.set_joint("revolute", top @ translation(0, -rc, zm) @ rot_z(math.pi / 2), axis=(1.0, 0.0, 0.0),
+    link.set_joint("revolute", top @ translation(0, -rc, zm) @ QUARTER_TURN, axis=(1.0, 0.0, 0.0),
                    limits=(0.0, p.uniform("swing", 0.8, 1.4)))
     link.add(lv)
     return zm + lv.anchor("reach")[2]
