@@ -148,8 +148,14 @@ def controls(ctx):
 
 def _at(z):
     """Pose of the kettle's build frame at height z: built with the spout at -x and the
-    handle at +x, a kettle is turned so that they point to +y and -y (side profile)."""
-    return TURN @ translation(0, 0, z)
+    handle at +x, a kettle is turned so that they point to +y and -y (side profile).
+
+    The same matrix as ``TURN @ translation(0, 0, z)`` (for z != -0.0), made without
+    the product: TURN turns about z, so its third row is (0, 0, 1, 0) and it has no
+    translation."""
+    T = TURN.copy()
+    T[2, 3] = z
+    return T
 
 
 def _button(p, builder, root, pose, radius):
