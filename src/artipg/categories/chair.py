@@ -27,13 +27,13 @@ import math
 import numpy as np
 
 from artipg.geometry import cuboid_between, cylinder, rect_ring, ring
-from artipg.geometry.transforms import rot_z, translation
+from artipg.geometry.transforms import translation
 from artipg.model.part import Part, Region
 from artipg.rules import Category, Slot
 from artipg.templates.chair_frames import (column_stool_base, folding_frame, folding_rear_legs, leg_stool_frame,
                                            post_arms, ring_back)
 from artipg.templates.extents import span
-from artipg.templates.seating import BACKS, CASTERS, SEATS, STOOL_SEATS, paddle_lever, star_base, wheel
+from artipg.templates.seating import BACKS, CASTERS, SEATS, STOOL_SEATS, paddle_lever, star_base, turns, wheel
 from artipg.templates.supports import round_legs, square_legs, tapered_legs
 
 LEGS = {square_legs: 1.0, round_legs: 1.0, tapered_legs: 1.0}
@@ -66,14 +66,15 @@ def _office(ctx):
     root = ctx.builder.create_link("base")
     star = star_base(p.scope("star"), reach, n, ah)
     root.add(star, translation(0, 0, z_arm))
-    for i in range(n):
+    tyre = wheel(p.scope("wheel"), rw, ww)  # one caster and one wheel design, copied
+    for T in turns(n) @ translation(reach, 0, z_arm):
         fork = ctx.builder.create_link("caster", root)
-        fork.set_joint("continuous", rot_z(2 * math.pi * i / n) @ translation(reach, 0, z_arm))
+        fork.set_joint("continuous", T)
         fork.add(copy.copy(caster))
         for y in ((y0,) if y0 == y1 else (y0, y1)):
             wl = ctx.builder.create_link("wheel", fork)
             wl.set_joint("continuous", translation(za[0], y, za[2]), axis=(0, 1, 0))
-            wl.add(wheel(p.scope(f"wheel{i}{int(y > 0)}"), rw, ww))
+            wl.add(copy.copy(tyre))
     sd, sw = p.uniform("seat_depth", 0.42, 0.5), p.uniform("seat_width", 0.44, 0.52)
     seat = ctx.choose("seat", SEATS)(p.scope("seat"), sd, sw)
     st = seat.anchor("top")[2]

@@ -34,6 +34,8 @@ SIZES = {"single_door": ((1, 1), (0.7, 0.95), (1.95, 2.1)), "double_door": ((2, 
          "french_door": ((1, 2), (0.6, 0.9), (1.95, 2.1)), "barn_door": ((1, 1), (0.8, 1.1), (1.95, 2.15))}
 HANDLES = {**DOOR_LEVERS, **DOOR_KNOBS}
 PULLS = {arch_handle: 1.0, flat_bar_handle: 1.0}  # long barn-door pulls
+HALF_TURN = rot_z(math.pi)
+ALONG_X = rot_y(math.pi / 2)  # local z -> +x
 
 
 def glazed_leaf(p, width, height, thickness=None):
@@ -83,7 +85,7 @@ def leaves(ctx):
     for i, side in enumerate(sides):  # a pair of doors has two identical leaves
         s = 1.0 if side == "+y" else -1.0
         cy = s * (d["Wo"] / 2 - d["ch"] - W / 2)
-        leaf, glass = replace(leaf0), glass0 and replace(glass0)
+        leaf, glass = (leaf0, glass0) if i == 0 else (replace(leaf0), glass0 and replace(glass0))
         link = mount_hinged(ctx.builder, root, leaf, front_x=t, center_yz=(cy, d["under"] + H / 2), size_yz=(W, H),
                             side=side, limits=(0.0, lim), name="leaf")
         if glass is not None:
@@ -108,7 +110,7 @@ def hardware(ctx):
     for link, leaf, side, s in leaves:
         hy, _ = free_edge_yz(side, (d["W"], d["H"]), backset)
         front = leaf.pose @ translation(-d["t"], hy, hz)
-        back = leaf.pose @ translation(0.0, hy, hz) @ rot_z(math.pi)
+        back = leaf.pose @ translation(0.0, hy, hz) @ HALF_TURN
         for T in (front, back):
             mount_turning(ctx.builder, link, next(handles), T, lim, name="handle")
         if lock:
@@ -117,7 +119,7 @@ def hardware(ctx):
                           (0.0, math.pi / 2), name="thumb_turn")
             r = p.uniform("cylinder_radius", 0.014, 0.02)
             link.add(Part("handle", "key_cylinder", [cylinder(r, 0.008, front @ translation(0.004 - 0.008, 0, dz)
-                                                              @ rot_y(math.pi / 2), role="rose")]))
+                                                              @ ALONG_X, role="rose")]))
 
 
 def _barn(ctx, root, d):

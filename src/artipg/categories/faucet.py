@@ -35,6 +35,7 @@ SUBS = {
 SPOUTS = {"pull_out": {gooseneck_spout: 2.0, arc_spout: 1.0}, "gooseneck": {gooseneck_spout: 1.0}}  # else TOP_SPOUTS
 C = 0.006  # clearance between parts that move past each other
 SWIVELS = {"fixed": 1.0, "revolute": 1.0, "continuous": 0.6}
+QUARTER_TURN = rot_z(math.pi / 2)
 
 
 def base(ctx):
@@ -78,15 +79,15 @@ def levers(ctx):
         tmpl = ctx.choose("handle", VALVE_HANDLES)
         turn = p.uniform("turn", 1.2, 1.6)
         h0 = tmpl(p.scope("handle"), max_reach=valves[0][2])
-        for T, s, _ in valves:  # a matching pair: the second handle is a copy of the first
+        for i, (T, s, _) in enumerate(valves):  # a matching pair: the second handle is a copy of the first
             link = b.create_link("lever", root)
             link.set_joint("revolute", T, axis=(0.0, 0.0, -s), limits=(0.0, turn))
-            link.add(replace(h0))
+            link.add(replace(h0) if i else h0)
         return valves[0][0][2, 3] + span(h0.primitives, 2)[1] - top[2, 3]  # handle tops above the spout hub
     lv = side_lever(p)
     zm = -p.uniform("lever_drop", 0.012, 0.025)
     link = b.create_link("lever", root)
-    link.set_joint("revolute", top @ translation(0, -rc, zm) @ rot_z(math.pi / 2), axis=(1.0, 0.0, 0.0),
+    link.set_joint("revolute", top @ translation(0, -rc, zm) @ QUARTER_TURN, axis=(1.0, 0.0, 0.0),
                    limits=(0.0, p.uniform("swing", 0.8, 1.4)))
     link.add(lv)
     return zm + lv.anchor("reach")[2]

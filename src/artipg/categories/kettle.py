@@ -35,6 +35,8 @@ from artipg.templates.vessels import (bellied_kettle_body, conical_kettle_body, 
 from artipg.templates.wall_switch import button_bezel, toggle_module
 
 TURN = rot_z(-math.pi / 2)
+HALF_TURN = rot_z(math.pi)
+UP = rot_y(math.pi / 2)  # a button's -x (out of its surface) points up
 # sub-category -> radius, height, opening (fraction of radius), bodies, lids, spouts, P(power base)
 SUBS = {
     "electric": ((0.065, 0.085), (0.18, 0.26), (0.5, 0.68), {straight_kettle_body: 1.0},
@@ -110,7 +112,7 @@ def spout(ctx):
     tmpl = ctx.choose("spout", SUBS[ctx.sub][5])
     z = H - p.uniform("drop", 0.03, 0.045) if tmpl is lip_spout else p.uniform("low", 0.12, 0.3) * H
     s = tmpl(p, rise=H - z + p.uniform("over", -0.01, 0.02))
-    T = _at(zb) @ rot_z(math.pi) @ translation(wall_radius(part, z), 0, z) @ rot_y(math.atan(wall_slope(part, z)))
+    T = _at(zb) @ HALF_TURN @ translation(wall_radius(part, z), 0, z) @ rot_y(math.atan(wall_slope(part, z)))
     root.add(s, T)
     if tmpl is not lip_spout and p.flag("whistle", 0.5):
         cap = whistle_cap(p.scope("whistle"), float(s.anchors["tip_r"][0]))
@@ -128,7 +130,7 @@ def controls(ctx):
     if ctx.sub == "electric" and p.flag("switch", 0.85):  # on/off lever under the handle
         z = zl - float(h.anchors["tube"][0]) - 0.016
         tilt = rot_y(math.atan(wall_slope(part, z)))  # along the wall's outward normal
-        pose = _at(zb + z) @ translation(wall_radius(part, z), 0, 0) @ tilt @ rot_z(math.pi)
+        pose = _at(zb + z) @ translation(wall_radius(part, z), 0, 0) @ tilt @ HALF_TURN
         toggle_module(p.scope("switch"), ctx.builder, root, pose, 0.014, 0.022)
     if ctx.sub == "electric" and p.flag("release", 0.6):  # lid-release button on top of the handle
         x, _, z = h.anchors["top"]
@@ -138,8 +140,7 @@ def controls(ctx):
         pad = p.uniform("pad", 0.003, 0.005)
         root.add(Part("handle", "button_pad", [cuboid(0.022, 2 * r, pad, translation(x, 0, z + pad / 2 - 0.001),
                                                       role="pad")]), _at(zb), name="pad")
-        up = rot_y(math.pi / 2)  # the button's -x (out of its surface) points up
-        _button(p.scope("release"), ctx.builder, root, _at(zb) @ translation(x, 0, z + pad - 0.001) @ up, 0.6 * r)
+        _button(p.scope("release"), ctx.builder, root, _at(zb) @ translation(x, 0, z + pad - 0.001) @ UP, 0.6 * r)
     if base is not None and ctx.sub == "gooseneck":  # power button on the base's front
         r, _, z = base.anchors["edge"]
         _button(p.scope("power"), ctx.builder, root, _at(0.0) @ translation(-r, 0, z), min(0.005, z - 0.0045))
@@ -147,8 +148,14 @@ def controls(ctx):
 
 def _at(z):
     """Pose of the kettle's build frame at height z: built with the spout at -x and the
-    handle at +x, a kettle is turned so that they point to +y and -y (side profile)."""
-    return TURN @ translation(0, 0, z)
+    handle at +x, a kettle is turned so that they point to +y and -y (side profile).
+
+    The same matrix as ``TURN @ translation(0, 0, z)`` (for z != -0.0), made without
+    the product: TURN turns about z, so its third row is (0, 0, 1, 0) and it has no
+    translation."""
+    T = TURN.copy()
+    T[2, 3] = z
+    return T
 
 
 def _button(p, builder, root, pose, radius):

@@ -32,6 +32,7 @@ SUBS = {
 }
 LIDS = {knobbed_lid: 3.0, loop_lid: 1.5, bridge_lid: 1.0}
 LUG_CLEAR = 0.008  # half-height bound of the side lugs (wire or tab)
+RIGHT, LEFT = rot_z(-math.pi / 2), rot_z(math.pi / 2)  # handles on the -y and +y sides
 
 
 def body(ctx):
@@ -55,21 +56,23 @@ def handles(ctx):
     root, part, top, R = ctx.out["body"]
     p = ctx.p
     kind = SUBS[ctx.sub][3]
-    sides = [(-math.pi / 2, "long")] if kind == "long" else [(-math.pi / 2, "side"), (math.pi / 2, "side")]
+    sides = [(RIGHT, "long")] if kind == "long" else [(RIGHT, "side"), (LEFT, "side")]
     if kind == "long" and p.flag("helper", 0.4 if ctx.sub == "saute_pan" else 0.15):
-        sides.append((math.pi / 2, "side"))
+        sides.append((LEFT, "side"))
     drop = p.uniform("drop", 0.002, 0.02)
     lug = None
-    for i, (angle, k) in enumerate(sides):
+    for i, (turn, k) in enumerate(sides):
         q = p.scope(f"handle{i}")
         if k == "long":  # its height follows from how high it is near the wall
             h = ctx.choose("long_handle", LONG_HANDLES)(q, R)
             z = top - 0.0015 - float(h.anchors["clear"][2]) - drop
+            r = wall_radius(part, z)
         else:  # lugs are at most 2 * LUG_CLEAR thick
             z = top - 0.0015 - LUG_CLEAR - drop
             lug = lug or ctx.choose("lug", SIDE_HANDLES)  # both lugs alike
-            h = lug(q, wall_radius(part, z))
-        root.add(h, rot_z(angle) @ translation(wall_radius(part, z), 0, z))
+            r = wall_radius(part, z)
+            h = lug(q, r)
+        root.add(h, turn @ translation(r, 0, z))
 
 
 RULE = Category(

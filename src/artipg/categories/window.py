@@ -17,6 +17,7 @@ Joints: 1-6 movable. Sizes (metres): 0.4-2.4 wide, 0.4-1.8 tall, frames 35-70 mm
 
 from __future__ import annotations
 
+import copy
 import math
 
 from artipg.geometry import cuboid_between
@@ -35,6 +36,7 @@ SIZES = {"casement": ((0.4, 0.75), (0.6, 1.6), (1, 3), (0.045, 0.07)),
          "double_hung": ((0.5, 1.2), (0.9, 1.8), (2, 2), (0.035, 0.045))}
 PULLS = {arch_handle: 1.0, flat_bar_handle: 1.0, edge_pull: 1.0}
 AWNING_HINGES = {"+z": 2.0, "-z": 1.0}
+FLAT = rot_x(math.pi / 2)  # a pull's long axis along y
 
 
 def frame(ctx):
@@ -82,7 +84,9 @@ def sashes(ctx):
     else:
         hinge, lim = None, p.uniform("limit", 1.2, 1.7)
     fixed_mid = d["n"] == 3 and p.flag("fixed_middle", 0.6)
-    hq, built = p.scope("handle"), False  # one handle design for every sash: drawn once, then replayed
+    # one handle design for every sash: drawn once, then copied (casement handles) or
+    # replayed (pulls, whose length follows the sash)
+    hq, built, handle = p.scope("handle"), False, None
     for i, y in enumerate(d["ys"]):
         q = p.scope(f"sash{i}")
         if fixed_mid and i == 1:
@@ -99,14 +103,17 @@ def sashes(ctx):
         link.add(glass, frame_part.pose)
         hy, hz = free_edge_yz(side, (sw, sh), grid["rail"] / 2)
         front = frame_part.pose @ translation(-ts, hy, hz)
-        hp, built = replay(hq) if built else hq, True
         if vertical:  # window handle: fixed base, lever pointing down, a quarter turn
-            base, lever = casement_handle(hp)
+            if handle is None:
+                base, lever = handle = casement_handle(hq)
+            else:
+                base, lever = copy.copy(handle[0]), copy.copy(handle[1])
             link.add(base, front)
             mount_turning(ctx.builder, link, lever, front @ translation(base.anchor("mount")[0], 0, 0),
                           (0.0, math.pi / 2), name="handle", axis=(sgn, 0.0, 0.0))  # towards the hinge
         else:
-            link.add(pull_t(hp, length=min(0.2, 0.4 * sw)), front @ rot_x(math.pi / 2))
+            hp, built = replay(hq) if built else hq, True
+            link.add(pull_t(hp, length=min(0.2, 0.4 * sw)), front @ FLAT)
 
 
 def _place(ctx, root, sash, origin, axis=None, travel=0.0):
@@ -161,7 +168,7 @@ def _hung(ctx, root, d, c, sash, rail):
     for i in range(k):
         y = 0.0 if k == 1 else (i - 0.5) * 0.5 * ws
         h = tmpl(p.scope(f"lift{i}"), length=min(0.12, 0.25 * ws))
-        link.add(h, translation(-ts, y, -hs / 2 + rail / 2) @ rot_x(math.pi / 2))
+        link.add(h, translation(-ts, y, -hs / 2 + rail / 2) @ FLAT)
 
 
 RULE = Category(

@@ -21,6 +21,7 @@ from artipg.model.part import Part, Region
 #: hinge edge of a box -> yaw of the lid frame (the lid extends towards its local -x)
 EDGE_YAW = {"+x": 0.0, "+y": math.pi / 2, "-x": math.pi, "-y": -math.pi / 2}
 _EDGE_TURN = {edge: rot_z(yaw) for edge, yaw in EDGE_YAW.items()}
+_FLAT = rot_x(math.pi / 2)  # a prism's triangle in the x-z plane
 
 
 def open_box(p, depth: float, width: float, height: float, wall: float | None = None, z0: float = 0.0,
@@ -97,7 +98,7 @@ def gable_lid(p, length: float, width: float, thickness: float | None = None) ->
     t = p.uniform("thickness", 0.008, 0.02, fixed=thickness)
     h = p.uniform("pitch", 0.06, 0.15) * length
     prims = [cuboid_between((-length, -width / 2, 0), (0, width / 2, t), role="top"),
-             tri_prism(length, h, 0.0, width, translation(-length / 2, 0, t) @ rot_x(math.pi / 2), role="top")]
+             tri_prism(length, h, 0.0, width, translation(-length / 2, 0, t) @ _FLAT, role="top")]
     return _lid("gable_lid", prims, length, width, t + h)
 
 

@@ -33,6 +33,7 @@ from artipg.templates.levers import top_grasp
 #: round surface (``artipg.geometry.revolve.SECTOR_SAGITTA``), or the skirt the simulators
 #: see cuts into the neck they see.
 CLEAR = 0.0008
+_ALONG_X = rot_y(math.pi / 2)  # local z -> +x
 
 
 def screw_cap(p, neck_r: float, neck_h: float, height: float | None = None) -> Part:
@@ -146,7 +147,7 @@ def pump_top(p, builder, parent, pose, neck):
                 grasps=[top_grasp(0.0, 0.0, stem_hi + hh / 2, 2 * rh + 0.02, "y", (0.0, 0.0, -1.0))],
                 actionable="slider_button")
     tip = Part("nozzle", "pump_nozzle", [cylinder(rz, nz + rh / 2, translation(-(nz + rh / 2) / 2, 0, stem_hi + hh / 2)
-                                                  @ rot_y(math.pi / 2), role="nozzle")])
+                                                  @ _ALONG_X, role="nozzle")])
     pl = builder.create_link("pump", link)
     pl.set_joint("prismatic", translation(), axis=(0.0, 0.0, -1.0), limits=(0.0, travel))
     pl.add(head)

@@ -26,6 +26,7 @@ from artipg.geometry.transforms import rot_x, rot_y, rot_z, translation
 from artipg.geometry.tube import arc, line
 from artipg.model.part import Part, Region
 from artipg.templates.extents import span
+from artipg.templates.seating import turns
 
 _ALONG_Y = rot_x(math.pi / 2)
 
@@ -43,7 +44,7 @@ def column_stool_base(p, top: float, gas: bool = False) -> Part:
     prims = [frustum(rb, rb * p.uniform("dome", 0.6, 1.0), th, translation(0, 0, th / 2), role="foot"),
              torus(rf, 0.01, pose=translation(0, 0, zf), role="footrest")]
     spoke = translation((rf + ro - 0.002) / 2, 0, zf)  # from inside the column's wall to the ring
-    prims += [cuboid(rf - ro + 0.002, 0.012, 0.012, rot_z(2 * math.pi * i / 3) @ spoke, role="spoke") for i in range(3)]
+    prims += [cuboid(rf - ro + 0.002, 0.012, 0.012, T, role="spoke") for T in turns(3) @ spoke]
     anchors = {"top": (0.0, 0.0, top)}
     if gas:  # the tube stops short of the seat: the piston shows above it
         zt = top - p.uniform("exposed", 0.04, 0.08)

@@ -31,6 +31,8 @@ _EMBED = 0.0015  # how deep a handle's root sinks into the wall
 _SIDEWAYS = np.array([[-1.0, 0.0, 0.0, 0.0], [0.0, 0.0, 1.0, 0.0], [0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 0.0, 1.0]])
 _LIFT = np.array([0.0, 0.0, 1.0])  # fixed handles lift the vessel
 _LIFT.flags.writeable = False
+_ALONG_X = rot_y(math.pi / 2)  # local z -> +x
+_XZ_TO_XY = rot_x(-math.pi / 2)  # tube plane x-z -> x-y
 
 
 def _grasp(x: float, y: float, z: float, approach, jaw, width: float) -> Grasp:
@@ -97,9 +99,9 @@ def grip_handle(p, radius: float) -> Part:
     T = translation(-_EMBED, 0, 0) @ rot_y(-a)  # local x along the handle
     rr = p.uniform("ring_radius", 0.008, 0.012)
     bracket, clear = _bracket(p, rn, a)
-    prims = [bracket, cylinder(rn, ln + 0.002, T @ translation((ln + 0.002) / 2, 0, 0) @ rot_y(math.pi / 2),
+    prims = [bracket, cylinder(rn, ln + 0.002, T @ translation((ln + 0.002) / 2, 0, 0) @ _ALONG_X,
                                        role="neck"),
-             cylinder(rg, lg, T @ translation(ln + lg / 2, 0, 0) @ rot_y(math.pi / 2), role="grip"),
+             cylinder(rg, lg, T @ translation(ln + lg / 2, 0, 0) @ _ALONG_X, role="grip"),
              torus(rr, 0.002, pose=T @ translation(ln + lg + rr - 0.001, 0, 0), role="grip")]
     part = _handle("grip_handle", prims, clear=clear)
     part.grasps = _side_grasps(a, (ln + 0.3 * lg, ln + 0.7 * lg), 2 * rg + 0.02)
@@ -134,7 +136,7 @@ def loop_lug(p, radius: float) -> Part:
     r = p.uniform("wire_radius", 0.003, 0.005)
     R = p.uniform("loop_radius", 0.012, 0.025)
     a = p.uniform("reach", 0.012, 0.03) + _sag(radius, R) + _EMBED
-    T = rot_x(-math.pi / 2) @ translation(-_sag(radius, R) - _EMBED, 0, -R)  # tube plane x-z -> x-y
+    T = _XZ_TO_XY @ translation(-_sag(radius, R) - _EMBED, 0, -R)
     part = _handle("loop_lug", tube(r, [line(a), arc(R, math.pi), line(a)], 0.0, T, role="grip"), clear=r)
     part.grasps = [_radial_grasp(a - _sag(radius, R) - _EMBED + R, 2 * r + 0.02)]
     return part

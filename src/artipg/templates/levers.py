@@ -32,6 +32,8 @@ from artipg.model.part import Grasp, Part, Region
 CLEARANCE = 0.006
 _ALONG_Y = rotation((1.0, 0.0, 0.0), -math.pi / 2)  # local z -> +y
 _ALONG_X = rot_y(math.pi / 2)                      # local z -> +x
+_ALONG_MINUS_X = rot_y(-math.pi / 2)               # local z -> -x
+_QUARTER_TURN = rot_z(math.pi / 2)
 # gripper approaching -z (from above), jaws closing along x / along y
 _TOP_JAW_X = np.array([[0.0, 1.0, 0.0, 0.0], [1.0, 0.0, 0.0, 0.0], [0.0, 0.0, -1.0, 0.0], [0.0, 0.0, 0.0, 1.0]])
 _TOP_JAW_Y = np.array([[-1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0], [0.0, 0.0, -1.0, 0.0], [0.0, 0.0, 0.0, 1.0]])
@@ -63,7 +65,7 @@ def _bail(p, template, span, clear, rc_frac, sleeve):
     if span - rc > 1e-4:
         segs.append(line(2 * (span - rc)))
     segs += [arc(rc, -math.pi / 2), line(h)]
-    prims = tube(r, segs, heading=math.pi / 2, pose=rot_z(math.pi / 2) @ translation(-span, 0, 0), role="wire")
+    prims = tube(r, segs, heading=math.pi / 2, pose=_QUARTER_TURN @ translation(-span, 0, 0), role="wire")
     # pivot pins through the leg ends, coaxial with the pivot axis: they meet the ear lugs
     # face to face (anchor pin_+y), which keeps the contact exact at any bail angle
     rp = p.uniform("pin_radius", 1.2, 1.8) * r
@@ -199,7 +201,7 @@ def side_lever(p, radius: float | None = None) -> Part:
     hl = p.uniform("hub_length", 0.01, 0.02)
     L = p.uniform("arm_length", 0.035, 0.07)
     ra = min(p.uniform("arm_radius", 0.35, 0.6) * rh, 0.45 * hl)
-    prims = [frustum(rh, 0.9 * rh, hl, translation(-hl / 2, 0, 0) @ rot_y(-math.pi / 2), role="hub"),
+    prims = [frustum(rh, 0.9 * rh, hl, translation(-hl / 2, 0, 0) @ _ALONG_MINUS_X, role="hub"),
              cylinder(ra, L, translation(-hl + ra, 0, L / 2), role="grip"),
              sphere(1.3 * ra, pose=translation(-hl + ra, 0, L), role="grip")]
     g = Grasp(np.array([[0.0, 0.0, 1.0, -hl + ra], [0.0, 1.0, 0.0, 0.0], [-1.0, 0.0, 0.0, 0.8 * L],

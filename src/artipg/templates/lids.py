@@ -42,9 +42,11 @@ def _lid(template, prims, R, t, skirt, top, sides, grip_roles=("disc",), grasps=
         T = _EDGE.copy()
         T[0, 3], T[2, 3] = -a + 0.01, (t - skirt) / 2
         grasps = [Grasp(T, t + skirt + 0.02, _UP)]
-    edge = np.array([[-a - 1e-3, -0.4 * a, -skirt - 1e-3], [-a + 0.03, 0.4 * a, t + 1e-3]])
-    regions = {"lift": Region(grip_roles), "grasp": Region(grip_roles) if grip_roles != ("disc",)
-               else Region(("disc", "skirt"), edge)}
+    if grip_roles != ("disc",):
+        regions = {"lift": Region(grip_roles), "grasp": Region(grip_roles)}
+    else:  # the front edge
+        edge = np.array([[-a - 1e-3, -0.4 * a, -skirt - 1e-3], [-a + 0.03, 0.4 * a, t + 1e-3]])
+        regions = {"lift": Region(grip_roles), "grasp": Region(("disc", "skirt"), edge)}
     return Part("lid", template, prims, anchors={"top": (0.0, 0.0, top), "hinge": (a, 0.0, -skirt),
                                                   "front": (-a, 0.0, 0.0)},
                 regions=regions, grasps=grasps)

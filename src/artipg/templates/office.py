@@ -125,7 +125,7 @@ def humped_arm(p, length, width, radius, clear, skirt, axle_r, nose_gap) -> Part
 
     def top(x0, y1, z0, t):
         wedge = tri_prism(hl, hh, hl * p.uniform("hump_peak", 0.1, 0.4), 2 * y1,
-                          translation(-hl / 2 - 0.002, 0, z0 + t) @ rot_x(math.pi / 2), role="cover")
+                          translation(-hl / 2 - 0.002, 0, z0 + t) @ _Y, role="cover")
         return [cuboid_between((x0, -y1, z0), (0.0, y1, z0 + t), role="cover"), wedge]
     return _arm("humped_arm", top, p, length, width, radius, clear, skirt, axle_r, nose_gap)
 

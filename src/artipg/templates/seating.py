@@ -22,12 +22,31 @@ from __future__ import annotations
 
 import math
 
-from artipg.geometry import cuboid, cuboid_between, cylinder, frustum, rect_ring
+import numpy as np
+
+from artipg.geometry import Primitive, cuboid, cuboid_between, cylinder, frustum, rect_ring
 from artipg.geometry.transforms import rot_x, rot_y, rot_z, translation
 from artipg.model.part import Part, Region
 
 _Y_AXIS = rot_x(math.pi / 2)  # local z -> -y: cylinders lying along y
 _X_AXIS = rot_y(math.pi / 2)
+
+
+def _turn_table(n: int) -> np.ndarray:
+    T = np.stack([rot_z(2 * math.pi * i / n) for i in range(n)])
+    T.flags.writeable = False
+    return T
+
+
+# a star of n arms is placed by one stacked product (whose slices are the products made
+# one by one), with the rotations made once for the usual arm counts
+_TURNS = {n: _turn_table(n) for n in (3, 4, 5, 6)}
+
+
+def turns(n: int) -> np.ndarray:
+    """Rotations (n, 4, 4) about +z by 2*pi*i/n radians, i = 0 .. n-1 (read-only)."""
+    T = _TURNS.get(n)
+    return T if T is not None else _turn_table(n)
 
 
 def _seat(template, prims, t):
@@ -85,8 +104,9 @@ def _carrier(p, width, z0, spine, t):
 
 
 def _back(template, prims, lean, top):
-    R = rot_y(lean)
-    prims = [pr.placed(R) for pr in prims]
+    # leaned back in one stacked product (its slices are the products pr.placed would make)
+    poses = rot_y(lean) @ np.concatenate([pr.pose for pr in prims]).reshape(-1, 4, 4)
+    prims = [Primitive(pr.geom, pr.params, T, pr.role) for pr, T in zip(prims, poses)]
     return Part("backrest", template, prims, anchors={"top": (top * math.sin(lean), 0.0, top * math.cos(lean))},
                 regions={"push": Region(("board",))})
 
@@ -154,16 +174,14 @@ def star_base(p, reach: float, n: int, arm_height: float) -> Part:
     round_arms = p.flag("round_arms", 0.4)
     prims = [cylinder(hub_r, hub_h, translation(0, 0, hub_h / 2), role="hub")]
     L = reach + 0.02 - hub_r * 0.5
-    for i in range(n):
-        R = rot_z(2 * math.pi * i / n)
-        if round_arms:
-            T = R @ translation(hub_r * 0.5 + L / 2, 0, arm_height / 2) @ _X_AXIS
-            prims.append(frustum(arm_height / 2, 0.6 * arm_height / 2, L, T, role="arm"))
-        else:
-            prims.append(cuboid(L, w, arm_height, R @ translation(hub_r * 0.5 + L / 2, 0, arm_height / 2), role="arm"))
-    if round_arms:  # sockets under the tapered ends for the caster stems
-        prims += [cylinder(0.012, arm_height / 2, rot_z(2 * math.pi * i / n) @ translation(reach, 0, arm_height / 4),
-                           role="arm") for i in range(n)]
+    R = turns(n)
+    arm = R @ translation(hub_r * 0.5 + L / 2, 0, arm_height / 2)
+    if round_arms:
+        prims += [frustum(arm_height / 2, 0.6 * arm_height / 2, L, T, role="arm") for T in arm @ _X_AXIS]
+        # sockets under the tapered ends for the caster stems
+        prims += [cylinder(0.012, arm_height / 2, T, role="arm") for T in R @ translation(reach, 0, arm_height / 4)]
+    else:
+        prims += [cuboid(L, w, arm_height, T, role="arm") for T in arm]
     return Part("base", "star_base", prims, anchors={"hub_top": (0.0, 0.0, hub_h)})
 
 

@@ -12,6 +12,7 @@ turns levers tip-down for positive joint values.
 
 from __future__ import annotations
 
+import copy
 import math
 
 import numpy as np
@@ -178,6 +179,9 @@ def spoke_wheel(p, side: float = 1.0, radius: float | None = None) -> Part:
                 grasps=grasps, actionable="hinge_handle")
 
 
+SIDELESS = frozenset((ball_knob, flared_knob, thumb_turn))  # templates that ignore ``side``
+
+
 def mount_turning(builder, parent, part, pose: np.ndarray, limits, name: str = "handle", axis=None):
     """Attach ``part`` on a revolute joint about the mount frame's x axis.
 
@@ -224,6 +228,15 @@ def replay(p) -> _Replay:
 def matching(template, p, sides) -> list:
     """One handle design built for each lever direction in ``sides`` (a set of door
     hardware: the same lever on both faces and both leaves); parameters are drawn and
-    recorded once, by the first build."""
-    first = template(p, side=sides[0])
-    return [first] + [template(replay(p), side=s) for s in sides[1:]]
+    recorded once, by the first build. A direction built already (any direction, for
+    the templates in :data:`SIDELESS`) gets a copy of that part."""
+    built, out = {}, []
+    for s in sides:
+        key = None if template in SIDELESS else s
+        part = built.get(key)
+        if part is None:
+            part = built[key] = template(replay(p) if built else p, side=s)
+        else:
+            part = copy.copy(part)
+        out.append(part)
+    return out
