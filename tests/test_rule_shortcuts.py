@@ -79,7 +79,7 @@ def test_leaned_back_is_each_primitive_placed():
 
 
 def test_kettle_at_is_the_product():
-    zs = list(np.random.default_rng(2).uniform(-1.0, 1.0, 2000)) + [0.0, 5e-324, -5e-324, 1e-3, 0.3]
+    zs = list(np.random.default_rng(2).uniform(-1.0, 1.0, 2000)) + [0.0, -0.0, 5e-324, -5e-324, 1e-3, 0.3]
     for z in zs:
         assert _bits(TURN @ translation(0, 0, z)) == _bits(_at(z))
 

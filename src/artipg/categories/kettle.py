@@ -150,11 +150,11 @@ def _at(z):
     """Pose of the kettle's build frame at height z: built with the spout at -x and the
     handle at +x, a kettle is turned so that they point to +y and -y (side profile).
 
-    The same matrix as ``TURN @ translation(0, 0, z)`` (for z != -0.0), made without
-    the product: TURN turns about z, so its third row is (0, 0, 1, 0) and it has no
-    translation."""
+    The same matrix as ``TURN @ translation(0, 0, z)``, made without the product: TURN
+    turns about z, so its third row is (0, 0, 1, 0) and it has no translation; the
+    product's sum turns a -0.0 into +0.0, and so does ``+ 0.0``."""
     T = TURN.copy()
-    T[2, 3] = z
+    T[2, 3] = z + 0.0
     return T
 
 
