@@ -4,10 +4,11 @@
 and hands them to :func:`draw_kernel`, which picks each point's patch cell by the
 inverse CDF of the cell areas, places the point with its family's closed-form sampler
 (:func:`artipg.geometry.patches.place_family`), applies the primitive's pose and
-gathers its labels, one point at a time. Its arithmetic is that of the numpy
-definition (:func:`artipg.annotate.points.draw_plain`), operation for operation and in
-the same order, so the points are the same to the bit (``tests/test_points_fast.py``
-compares them).
+gathers its labels, one point at a time (the cells of the planar families are posed
+once, and their points placed in the object frame directly). Its arithmetic is that of
+the numpy definition (:func:`artipg.annotate.points.draw_plain`), operation for
+operation and in the same order, so the points are the same to the bit
+(``tests/test_points_fast.py`` compares them).
 
 This module imports numba; import it only where points are drawn (``import artipg``
 and generation stay light).
@@ -28,7 +29,8 @@ from artipg.kernel_cache import drop_stale_caches
 
 drop_stale_caches(__file__, [points.__file__, patches.__file__])  # FAMILY_CODE, TUBE_* are compiled in
 
-_TORUS = FAMILY_CODE["torus"]
+if list(FAMILY_CODE) != ["rect", "tri", "sector", "band", "zone", "torus"]:
+    raise RuntimeError("draw_kernel hard-codes the family codes: update it with FAMILIES")
 _TWO_PI = 2.0 * math.pi
 
 
@@ -115,16 +117,39 @@ def draw_kernel(U, weight, code, Q, W, cell_prim, prim_part, prim_link, part_sem
         while cum[c] <= y:
             c += 1
         guide[b] = c
+    # per cell: its labels, and for the planar families (affine in o, a, b) its
+    # parameters posed in the object frame, so that their points need no transform
+    lab = np.empty((K, 4), np.int64)
+    P = np.empty((K, 15))
+    for c in range(K):
+        p = cell_prim[c]
+        part = prim_part[p]
+        lab[c, 0] = p
+        lab[c, 1] = part
+        lab[c, 2] = part_semantic[part]
+        lab[c, 3] = prim_link[p]
+        if code[c] <= 2:
+            q = Q[c]
+            w = W[p]
+            for a in range(3):
+                P[c, a] = ((w[a, 0] * q[0] + w[a, 1] * q[1]) + w[a, 2] * q[2]) + w[a, 3]
+                for r in range(3, 12, 3):
+                    P[c, r + a] = (w[a, 0] * q[r] + w[a, 1] * q[r + 1]) + w[a, 2] * q[r + 2]
+            P[c, 12] = q[12]
+            P[c, 13] = q[13]
+            P[c, 14] = q[14]
     for j in range(n):
         x = U[0, j] * total
         c = guide[int(U[0, j] * K)]
         while cum[c] <= x:
             c += 1
+        for a in range(4):
+            labels[a, j] = lab[c, a]
         f = code[c]
-        q = Q[c]
         u = U[1, j]
         v = U[2, j]
-        if f <= 2:  # rect, tri, sector: o + u a + v b
+        if f <= 2:  # rect, tri, sector: o + u a + v b, posed
+            q = P[c]
             if f == 1 and u + v > 1.0:  # the far half of the unit square folds onto the triangle
                 u = 1.0 - u
                 v = 1.0 - v
@@ -135,11 +160,12 @@ def draw_kernel(U, weight, code, Q, W, cell_prim, prim_part, prim_link, part_sem
                 phi = v * q[14]
                 u = math.cos(phi) * rho
                 v = math.sin(phi) * rho
-            x = q[0] + u * q[3] + v * q[6]
-            y = q[1] + u * q[4] + v * q[7]
-            z = q[2] + u * q[5] + v * q[8]
-            nx, ny, nz = q[9], q[10], q[11]
-        elif f == 3:  # band
+            for a in range(3):
+                out[0, j, a] = q[a] + u * q[3 + a] + v * q[6 + a]
+                out[1, j, a] = q[9 + a]
+            continue
+        q = Q[c]
+        if f == 3:  # band
             r0 = q[0]
             r1 = q[1]
             rho = math.sqrt(r0 * r0 + u * (r1 * r1 - r0 * r0))
@@ -171,13 +197,7 @@ def draw_kernel(U, weight, code, Q, W, cell_prim, prim_part, prim_link, part_sem
             y = rho * st
             z = r * sv
             nx, ny, nz = cv * ct, cv * st, sv
-        p = cell_prim[c]
-        w = W[p]
+        w = W[lab[c, 0]]
         for a in range(3):
             out[0, j, a] = ((w[a, 0] * x + w[a, 1] * y) + w[a, 2] * z) + w[a, 3]
             out[1, j, a] = (w[a, 0] * nx + w[a, 1] * ny) + w[a, 2] * nz
-        labels[0, j] = p
-        part = prim_part[p]
-        labels[1, j] = part
-        labels[2, j] = part_semantic[part]
-        labels[3, j] = prim_link[p]

@@ -508,27 +508,54 @@ def draw_plain(U, weight, code, Q, W, cell_prim, prim_part, prim_link, part_sema
     (same arguments, same bits) compiles.
 
     Point j takes the first cell whose cumulative weight exceeds ``U[0, j]`` times the
-    total weight, is placed on it by :func:`artipg.geometry.patches.place_family` with
-    ``u = U[1, j]``, ``v = U[2, j]``, and is moved to the object frame by its
-    primitive's pose ``W`` (N, 3, 4). Writes positions and normals into ``out``
-    (2, n, 3) and primitive, part, semantic id and link into ``labels`` (4, n).
+    total weight and is placed on it by :func:`artipg.geometry.patches.place_family`
+    with ``u = U[1, j]``, ``v = U[2, j]``: directly in the object frame for the planar
+    families, whose cell parameters are posed first by the primitive's pose ``W``
+    (N, 3, 4); in the primitive's frame, then posed, for the others. Writes positions
+    and normals into ``out`` (2, n, 3) and primitive, part, semantic id and link into
+    ``labels`` (4, n).
     """
     cum = np.cumsum(weight)
     cell = np.searchsorted(cum, U[0] * cum[-1], side="right")
     fam = code[cell]
+    prim = cell_prim[cell]
+    pts, nrm = out
     local = np.empty((6, U.shape[1]))
     for name, f in FAMILY_CODE.items():
         idx = np.flatnonzero(fam == f)
-        if len(idx):
-            q = Q[cell[idx], :FAMILIES[name]].T
-            local[:, idx] = place_family(name, q, U[1, idx], U[2, idx])
-    prim = cell_prim[cell]
-    G = W[prim]  # (n, 3, 4)
-    x, y, z, nx, ny, nz = local[:, :, None]
-    out[0] = ((G[:, :, 0] * x + G[:, :, 1] * y) + G[:, :, 2] * z) + G[:, :, 3]
-    out[1] = (G[:, :, 0] * nx + G[:, :, 1] * ny) + G[:, :, 2] * nz
+        if not len(idx):
+            continue
+        q = Q[cell[idx], :FAMILIES[name]]
+        if f <= _PLANAR:
+            posed = _pose_planar(q, W[prim[idx]])
+            xyz = place_family(name, posed.T, U[1, idx], U[2, idx])
+            pts[idx] = xyz[:3].T
+            nrm[idx] = xyz[3:].T
+        else:
+            local[:, idx] = place_family(name, q.T, U[1, idx], U[2, idx])
+    idx = np.flatnonzero(fam > _PLANAR)
+    G = W[prim[idx]]  # (m, 3, 4)
+    x, y, z, nx, ny, nz = local[:, idx, None]
+    pts[idx] = ((G[:, :, 0] * x + G[:, :, 1] * y) + G[:, :, 2] * z) + G[:, :, 3]
+    nrm[idx] = (G[:, :, 0] * nx + G[:, :, 1] * ny) + G[:, :, 2] * nz
     part = prim_part[prim]
     labels[0] = prim
     labels[1] = part
     labels[2] = part_semantic[part]
     labels[3] = prim_link[prim]
+
+
+#: Families up to this code (rect, tri, sector) are affine in their o, a, b, n: the draw
+#: poses their parameters instead of their points.
+_PLANAR = FAMILY_CODE["sector"]
+
+
+def _pose_planar(q: np.ndarray, G: np.ndarray) -> np.ndarray:
+    """Rect, tri or sector parameters ``q`` (m, p) posed by ``G`` (m, 3, 4): o as a point,
+    a, b and n as directions (the rest copied)."""
+    out = q.copy()
+    for r in range(0, 12, 3):
+        x, y, z = q[:, r:r + 1], q[:, r + 1:r + 2], q[:, r + 2:r + 3]  # (m, 1) each
+        out[:, r:r + 3] = (G[:, :, 0] * x + G[:, :, 1] * y) + G[:, :, 2] * z
+    out[:, 0:3] += G[:, :, 3]
+    return out
