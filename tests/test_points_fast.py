@@ -5,7 +5,9 @@ Patch blocks, component areas, local boxes, the primitive table, the object boun
 the labelled point draw are compared with straightforward versions written here with
 the generic helpers of :mod:`artipg.geometry.patches` (stacking, tiling, one primitive
 at a time): every array must have the same bytes, not just close values, because the
-validation replays patch tables and samplers and objects must not change.
+validation replays patch tables and samplers and objects must not change. The compiled
+point draw is also compared with its numpy definition, and the torus's exact tube-angle
+draw with its law.
 """
 
 from __future__ import annotations
@@ -14,11 +16,13 @@ import numpy as np
 import pytest
 
 import artipg
-from artipg.annotate.points import SAMPLING_STREAM, PrimitiveTable, sample_points, transform_boxes
+from artipg.annotate.points import (FAMILY_CODE, SAMPLING_STREAM, PrimitiveTable, draw_plain, sample_points,
+                                    transform_boxes)
 from artipg.geometry import Cuboid, Frustum, Prism, RectRing, Ring, Sphere, Torus, TriPrism
 from artipg.geometry.box import _BOX_TABLE, _RING_COMP, _RING_SIDES, _RING_TABLE, _RING_TABLES
-from artipg.geometry.patches import (FAMILIES, TWO_PI, Patch, bands, block, linear, rects, sample_family,
-                                     sectors, tori, torus_tube_angles, tris, zones)
+from artipg.geometry.patches import (FAMILIES, TWO_PI, Patch, bands, block, linear, place_family, rects,
+                                     sample_family, sectors, tori, torus_tube_angles, torus_tube_quantiles, tris,
+                                     zones)
 from artipg.geometry.revolve import _FRUSTUM_CAPS, _RING_CAPS
 from artipg.rules.streams import streams
 from artipg.vocabulary import label_id
@@ -346,15 +350,69 @@ def _plain_sampler(family, q, rng):
     return np.stack([rho * ct, rho * st, r * sv, cv * ct, cv * st, sv])
 
 
+def _plain_place(family, q, u, v):
+    """The family placements from uniforms (the point draw's), written plainly."""
+    if family in ("rect", "tri", "sector"):
+        if family == "tri":
+            flip = u + v > 1.0
+            u, v = np.where(flip, 1.0 - u, u), np.where(flip, 1.0 - v, v)
+        elif family == "sector":
+            r0, r1, arc = q[12], q[13], q[14]
+            rho = np.sqrt(r0 * r0 + u * (r1 * r1 - r0 * r0))
+            phi = v * arc
+            u, v = rho * np.cos(phi), rho * np.sin(phi)
+        out = np.empty((6, q.shape[1]))
+        out[0:3] = q[0:3] + u * q[3:6] + v * q[6:9]
+        out[3:6] = q[9:12]
+        return out
+    if family == "band":
+        r0, r1, z0, z1, arc, nr, nz = q
+        rho = np.sqrt(r0 * r0 + u * (r1 * r1 - r0 * r0))
+        s = u * (r0 + r1) / (rho + r0 + 1e-300)
+        c, d = np.cos(v * arc), np.sin(v * arc)
+        return np.stack([rho * c, rho * d, z0 + s * (z1 - z0), nr * c, nr * d, nz])
+    if family == "zone":
+        R, z0, z1 = q
+        z = z0 + u * (z1 - z0)
+        rho = np.sqrt(np.maximum(R * R - z * z, 0.0))
+        c, d = np.cos(v * TWO_PI), np.sin(v * TWO_PI)
+        return np.stack([rho * c, rho * d, z, rho * c / R, rho * d / R, z / R])
+    R, r, arc = q
+    cv, sv = torus_tube_quantiles(R, r, u)  # tested on its own below; the assembly is under test
+    ct, st = np.cos(v * arc), np.sin(v * arc)
+    rho = R + r * cv
+    return np.stack([rho * ct, rho * st, r * sv, cv * ct, cv * st, sv])
+
+
+def _family_params(family, k, rng):
+    q = rng.random((FAMILIES[family], k)) + 0.1
+    if family == "torus":
+        q[1] *= 0.3
+    if family == "zone":
+        q[1], q[2] = -q[0] * rng.random(k), q[0] * rng.random(k)
+    return q
+
+
+@pytest.mark.parametrize("family", list(FAMILIES))
+def test_placements_match_the_plain_placements_with_and_without_out(family):
+    rng = np.random.default_rng(6)
+    for k in (0, 1, 9, 500):
+        q = _family_params(family, k, rng)
+        u, v = rng.random((2, k))
+        if k > 4:  # the ends of [0, 1)
+            u[:4] = v[:4] = (0.0, 2.0 ** -53, 0.5, 1.0 - 2.0 ** -53)
+        want = _plain_place(family, q, u, v)
+        assert same(place_family(family, q, u, v), want)
+        big = np.full((6, k + 7), 3.0)
+        place_family(family, q, u, v, out=big[:, 4:4 + k])
+        assert same(big[:, 4:4 + k], want) and (big[:, :4] == 3.0).all() and (big[:, 4 + k:] == 3.0).all()
+
+
 @pytest.mark.parametrize("family", list(FAMILIES))
 def test_samplers_match_the_plain_samplers_with_and_without_out(family):
     rng = np.random.default_rng(5)
     for k in (0, 1, 9, 500):
-        q = rng.random((FAMILIES[family], k)) + 0.1
-        if family == "torus":
-            q[1] *= 0.3
-        if family == "zone":
-            q[1], q[2] = -q[0] * rng.random(k), q[0] * rng.random(k)
+        q = _family_params(family, k, rng)
         want = _plain_sampler(family, q, np.random.default_rng(k))
         assert same(sample_family(family, q, np.random.default_rng(k)), want)
         big = np.full((6, k + 7), 3.0)
@@ -428,30 +486,42 @@ class _PlainTable:
 
 
 def _plain_draw(obj, plain, n, seed, qpos=None):
+    """The point draw written plainly: 3 n uniforms; each point takes the first cell whose
+    cumulative area exceeds its first uniform times the total, and is placed with the
+    other two: on the posed cell for the planar families, on the local cell and then
+    posed for the others."""
     with streams(seed) as st:
-        rng = st.open(SAMPLING_STREAM)
-        L = obj.link_poses(qpos)
-        counts = rng.multinomial(n, plain.cell_p)
-        local = np.empty((6, n))
-        prim = np.empty(n, dtype=np.int64)
-        s = 0
-        for name, params, fprim, area, start, stop in plain.families:
-            rows = np.repeat(np.arange(stop - start), counts[start:stop])
-            k = len(rows)
-            if k:
-                local[:, s:s + k] = _plain_sampler(name, params.take(rows, axis=1), rng)
-                prim[s:s + k] = fprim.take(rows)
-                s += k
-        perm = rng.permutation(n)
-        prim = prim.take(perm)
-        x, y, z, nx, ny, nz = local.take(perm, axis=1)
-        G = np.ascontiguousarray((L[plain.prim_link] @ plain.prim_T)[:, :3].reshape(-1, 12).T).take(prim, axis=1)
-        pts = np.empty((n, 3))
-        nrm = np.empty((n, 3))
+        U = st.open(SAMPLING_STREAM).random((3, n))
+    L = obj.link_poses(qpos)
+    cum = np.cumsum(plain.cell_areas)
+    cell = np.searchsorted(cum, U[0] * cum[-1], side="right")
+    prim = plain.cell_prim.take(cell)
+    G = np.ascontiguousarray((L[plain.prim_link] @ plain.prim_T)[:, :3].reshape(-1, 12).T).take(prim, axis=1)
+    pts = np.empty((n, 3))
+    nrm = np.empty((n, 3))
+    for name, params, fprim, area, start, stop in plain.families:
+        sel = np.flatnonzero((cell >= start) & (cell < stop))
+        if not len(sel):
+            continue
+        q = params.take(cell[sel] - start, axis=1)
+        g = G[:, sel]
+        if name in ("rect", "tri", "sector"):
+            q = q.copy()
+            for k in range(0, 12, 3):
+                x, y, z = q[k:k + 3].copy()
+                for i in range(3):
+                    r = 4 * i
+                    q[k + i] = g[r] * x + g[r + 1] * y + g[r + 2] * z
+                    if k == 0:  # o is a point; a, b and n are directions
+                        q[k + i] += g[r + 3]
+            out = _plain_place(name, q, U[1, sel], U[2, sel])
+            pts[sel], nrm[sel] = out[:3].T, out[3:].T
+            continue
+        x, y, z, nx, ny, nz = _plain_place(name, q, U[1, sel], U[2, sel])
         for i in range(3):
             r = 4 * i
-            pts[:, i] = G[r] * x + G[r + 1] * y + G[r + 2] * z + G[r + 3]
-            nrm[:, i] = G[r] * nx + G[r + 1] * ny + G[r + 2] * nz
+            pts[sel, i] = g[r] * x + g[r + 1] * y + g[r + 2] * z + g[r + 3]
+            nrm[sel, i] = g[r] * nx + g[r + 1] * ny + g[r + 2] * nz
     part = plain.prim_part.take(prim)
     return pts, nrm, plain.part_semantic.take(part), part, plain.prim_link.take(prim), prim
 
@@ -498,3 +568,183 @@ def test_primitive_table_and_draw_match_the_plain_construction(category):
         assert same(table.prim_T, plain.prim_T)
         for g, (geom, P, k) in zip(table.groups, plain.groups):
             assert same(g.T, plain.prim_T[k])
+
+
+# ---------------------------------------------------------------- the compiled point draw
+
+def _draw_both(args, n):
+    from artipg.annotate.draw import draw_kernel
+
+    got = (np.full((2, n, 3), np.nan), np.full((4, n), -7, dtype=np.int64))
+    want = (np.full((2, n, 3), np.nan), np.full((4, n), -7, dtype=np.int64))
+    draw_kernel(*args, *got)
+    draw_plain(*args, *want)
+    return got, want
+
+
+@pytest.mark.parametrize("category", CATS)
+def test_draw_kernel_matches_its_numpy_definition(category):
+    for seed in range(3):
+        obj = artipg.generate(category, seed)
+        t = obj.primitive_table
+        code, Q = t.cell_rows
+        rng = np.random.default_rng(seed)
+        for qpos, parts, n in ((None, None, 2048), (obj.limits()[:, 1], None, 999),
+                               (None, [len(obj.parts) - 1], 300), (None, [0, len(obj.parts) // 2], 300)):
+            weight = t.cell_areas if parts is None else t.part_cell_p(parts)
+            U = rng.random((3, n))
+            U[:, :3] = [[0.0], [2.0 ** -53], [1.0 - 2.0 ** -53]]
+            args = (U, weight, code, Q, t.world_all(obj.link_poses(qpos)), t.cell_prim, t.prim_part,
+                    t.prim_link, t.part_semantic)
+            (pts, lab), (wpts, wlab) = _draw_both(args, n)
+            assert same(pts, wpts) and same(lab, wlab), (category, seed, parts)
+            if parts is not None:
+                assert np.isin(lab[1], parts).all()
+
+
+def test_draw_kernel_cell_choice_is_the_searchsorted_one_on_hard_weights():
+    """The guide-table scan picks np.searchsorted's cell for weights with zeros, tiny
+    and huge cells, and uniforms on bucket edges and cumulative-weight edges."""
+    rng = np.random.default_rng(11)
+    for K in (1, 2, 3, 7, 64, 1000):
+        for trial in range(6 if K < 1000 else 4):
+            w = rng.random(K) ** 8
+            w[rng.random(K) < 0.3] = 0.0
+            if trial == 1:
+                w[rng.integers(K)] = 1e6
+            if trial == 2:
+                w *= 1e-300
+            if trial == 3:  # cell ends just above the guide's bucket edges j / K
+                w = np.diff(np.arange(K + 1) / K * (1.0 + 2.0 ** -rng.integers(31, 53, K + 1)), prepend=0.0)[1:]
+            if w.sum() == 0:
+                w[-1] = 1.0
+            cum = np.cumsum(w)
+            edges = np.arange(K) / K
+            for b in range(K):  # and the smallest uniforms of each bucket
+                u = edges[b]
+                while u > 0.0 and int(np.nextafter(u, 0.0) * K) == b:
+                    u = np.nextafter(u, 0.0)
+                edges[b] = u
+            U0 = np.concatenate([edges, np.nextafter(edges, 0.0), np.nextafter(edges, 1.0), cum / cum[-1],
+                                 np.nextafter(cum / cum[-1], 0.0), rng.random(500), [0.0, 1.0 - 2.0 ** -53]])
+            U0 = U0[(U0 >= 0.0) & (U0 < 1.0)]
+            n = len(U0)
+            U = np.vstack([U0, rng.random((2, n))])
+            code = np.zeros(K, dtype=np.int64)  # all rects
+            Q = rng.random((K, 15))
+            W = np.tile(np.eye(4)[:3], (K, 1, 1))
+            ids = np.arange(K, dtype=np.int64)
+            (pts, lab), (wpts, wlab) = _draw_both((U, w, code, Q, W, ids, ids, ids, ids), n)
+            cell = np.searchsorted(cum, U0 * cum[-1], side="right")
+            assert same(lab[0], cell) and same(wlab[0], cell) and same(pts, wpts)
+            assert (w[cell] > 0).all()
+
+
+def _all_families_case(rng, K):
+    """K cells of every family with random parameters and poses."""
+    code = rng.integers(0, len(FAMILIES), K)
+    Q = np.zeros((K, 15))
+    for name, f in FAMILY_CODE.items():
+        sel = np.flatnonzero(code == f)
+        Q[sel, :FAMILIES[name]] = _family_params(name, len(sel), rng).T
+    W = np.empty((K, 3, 4))
+    for i in range(K):
+        A = np.linalg.qr(rng.normal(size=(3, 3)))[0]
+        W[i] = np.column_stack([A, rng.normal(size=3)])
+    ids = np.arange(K, dtype=np.int64)
+    return rng.random(K) + 0.01, code, Q, W, ids
+
+
+def test_draw_kernel_matches_its_numpy_definition_on_every_family():
+    rng = np.random.default_rng(12)
+    for K, n in ((1, 50), (6, 3000), (40, 5000)):
+        w, code, Q, W, ids = _all_families_case(rng, K)
+        U = rng.random((3, n))
+        U[1:, :4] = [[0.0, 2.0 ** -53, 0.5, 1.0 - 2.0 ** -53]] * 2
+        (pts, lab), (wpts, wlab) = _draw_both((U, w, code, Q, W, ids, ids, ids, ids), n)
+        assert same(pts, wpts) and same(lab, wlab)
+
+
+# ---------------------------------------------------------------- the torus's tube angles
+
+def _tube_cases(rng, n=4000):
+    """(R, r, u) over the whole range of r / R, with the ends of [0, 1) for u."""
+    R = rng.random(n) + 0.5
+    e = np.concatenate([np.zeros(8), 10.0 ** rng.uniform(-16, -1, n // 4), rng.random(n - n // 4 - 16),
+                        1.0 - 10.0 ** rng.uniform(-9, -2, 6), [1.0, 1.0]])
+    u = rng.random(n)
+    u[:8] = (0.0, 2.0 ** -53, 0.25, 0.5, 0.75, 1.0 - 2.0 ** -53, 1e-300, np.nextafter(0.5, 0.0))
+    u[-8:] = u[:8]
+    return R, e * R, u
+
+
+def test_tube_kernel_matches_the_numpy_quantiles():
+    import numba
+
+    from artipg.annotate.draw import tube_cos_sin
+
+    @numba.njit
+    def all_of(R, r, u, cv, sv):
+        for i in range(len(u)):
+            cv[i], sv[i] = tube_cos_sin(r[i] / R[i], u[i] * TWO_PI)
+
+    rng = np.random.default_rng(13)
+    for _ in range(3):
+        R, r, u = _tube_cases(rng)
+        cv, sv = np.empty(len(u)), np.empty(len(u))
+        all_of(R, r, u, cv, sv)
+        want = torus_tube_quantiles(R, r, u)
+        assert same(cv, want[0]) and same(sv, want[1])
+
+
+def test_tube_quantiles_solve_the_cdf_to_machine_precision():
+    """cos v and sin v are unit, and v solves (v + e sin v) / (2π) = u to rounding."""
+    rng = np.random.default_rng(14)
+    R, r, u = _tube_cases(rng, 20000)
+    keep = r < 0.9 * R  # conditioning: dv = dM / (1 + e cos v)
+    R, r, u = R[keep], r[keep], u[keep]
+    cv, sv = torus_tube_quantiles(R, r, u)
+    assert np.abs(cv * cv + sv * sv - 1.0).max() < 1e-15
+    v = np.arctan2(sv, cv) % TWO_PI
+    v[(u < 0.25) & (v > np.pi)] -= TWO_PI  # v = 2π - tiny for u = 0 rounds to 0
+    e = r / R
+    residual = (v + e * np.sin(v)) - TWO_PI * u
+    assert np.abs(residual).max() < 8 * np.spacing(TWO_PI)
+    # a = 0: v = 2π u exactly, so cos and sin are numpy's
+    R0, u0 = np.ones(50), rng.random(50)
+    cv0, sv0 = torus_tube_quantiles(R0, np.zeros(50), u0)
+    assert same(cv0, np.cos(u0 * TWO_PI)) and same(sv0, np.sin(u0 * TWO_PI))
+
+
+@pytest.mark.parametrize("e", [0.05, 0.3, 0.67, 0.95])
+def test_torus_points_follow_the_area_law(e):
+    """Tube angles of drawn torus points (from their positions, through the compiled
+    draw) against the exact law (v + e sin v) / (2π): Kolmogorov-Smirnov and
+    chi-square, and against the rejection sampler (two-sample KS)."""
+    from scipy import stats
+
+    n = 200_000
+    R, r, arc = 1.0, e, 4.0
+    K = 3
+    Q = np.zeros((K, 15))
+    Q[:, :3] = (R, r, arc)
+    W = np.tile(np.eye(4)[:3], (K, 1, 1))
+    ids = np.arange(K, dtype=np.int64)
+    U = np.random.default_rng(int(e * 1000)).random((3, n))
+    torus = np.full(K, FAMILY_CODE["torus"])
+    (pts, lab), (wpts, wlab) = _draw_both((U, np.ones(K), torus, Q, W, ids, ids, ids, ids), n)
+    assert same(pts, wpts)
+    x, y, z = pts[0].T
+    v = np.arctan2(z, np.hypot(x, y) - R) % TWO_PI
+    cdf = lambda t: (t + e * np.sin(t)) / TWO_PI  # noqa: E731
+    assert stats.kstest(v, cdf).pvalue > 1e-3
+    edges = np.linspace(0.0, TWO_PI, 41)
+    expected = np.diff(cdf(edges)) * n
+    assert stats.chisquare(np.histogram(v, edges)[0], expected).pvalue > 1e-3
+    ref = torus_tube_angles(np.full(n, R), np.full(n, r), np.random.default_rng(5))
+    assert stats.ks_2samp(v, ref).pvalue > 1e-3
+    # the arc angle is uniform on [0, arc], the normals unit and radial from the tube centre
+    th = np.arctan2(y, x) % TWO_PI
+    assert stats.kstest(th / arc, "uniform").pvalue > 1e-3
+    centre = np.stack([R * np.cos(th), R * np.sin(th), np.zeros(n)], axis=1)
+    np.testing.assert_allclose(pts[1], (pts[0] - centre) / r, atol=1e-9)

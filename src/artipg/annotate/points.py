@@ -1,9 +1,10 @@
 """Labelled surface point clouds sampled analytically from the primitives.
 
 Every primitive's surface is cut into patches of six families (see
-:mod:`artipg.geometry.patches`); sampling draws a multinomial count per patch, runs
-each family's closed-form sampler once for all its points and maps them to the object
-frame with one gathered transform, so the cost hardly grows with the object.
+:mod:`artipg.geometry.patches`); sampling draws three uniforms per point, picks each
+point's patch by the inverse CDF of the patch areas, places it with the family's
+closed-form sampler and maps it to the object frame (a compiled kernel,
+:mod:`artipg.annotate.draw`), so the cost hardly grows with the object.
 """
 
 from __future__ import annotations
@@ -16,7 +17,7 @@ from itertools import chain
 import numpy as np
 
 from artipg.geometry.base import TWO_PI
-from artipg.geometry.patches import FAMILIES, sample_family
+from artipg.geometry.patches import FAMILIES, place_family
 from artipg.rules.streams import streams
 from artipg.vocabulary import SEMANTIC_LABELS, label_id
 
@@ -454,14 +455,13 @@ class PointCloud:
     link_names: tuple
 
 
-_NO_TORUS = np.empty((6, 0))
-
-
 def sample_points(obj, n: int = 2048, seed: int = 0, qpos=None, parts=None) -> PointCloud:
     """Sample ``n`` area-uniform labelled surface points of ``obj`` at ``qpos``.
 
-    The number of points per primitive is multinomial in its surface area, and within
-    a primitive points are exactly area-uniform; the result is shuffled.
+    The points are independent: each picks a patch cell with probability proportional
+    to its area (so points per primitive are multinomial in area, in random order) and
+    is placed exactly area-uniformly on it, from three uniforms per point (one draw of
+    ``3 n``; see :func:`draw_plain`).
 
     Parameters
     ----------
@@ -478,38 +478,84 @@ def sample_points(obj, n: int = 2048, seed: int = 0, qpos=None, parts=None) -> P
     from artipg.annotate.draw import draw_kernel  # numba: loaded with the first draw
 
     table = obj.primitive_table
-    L = obj.link_poses(qpos)
-    cell_p = table.cell_p if parts is None else table.part_cell_p(parts)
+    weight = table.cell_areas if parts is None else table.part_cell_p(parts)
+    if not len(weight):
+        raise ValueError("the object has no surface to sample")
     code, Q = table.cell_rows
-    torus = table.families[-1] if table.families and table.families[-1].name == "torus" else None
     with streams(seed) as st:
-        rng = st.open(SAMPLING_STREAM)
-        counts = rng.multinomial(n, cell_p)
-        # the families' draws in sampling order: two uniforms per point of the families
-        # before the torus (one block each, which is one block for all), then the torus
-        # rejection draws, then the shuffle
-        n_torus = int(counts[torus.start:].sum()) if torus is not None else 0
-        U = rng.random(2 * (n - n_torus))
-        if n_torus:
-            rows = np.repeat(np.arange(torus.stop - torus.start), counts[torus.start:])
-            torus_local = sample_family("torus", torus.params.take(rows, axis=1), rng)
-        else:
-            torus_local = _NO_TORUS
-        perm = rng.permutation(n)
-    pts = np.empty((n, 3))
-    nrm = np.empty((n, 3))
+        U = st.open(SAMPLING_STREAM).random((3, n))
+    out = np.empty((2, n, 3))
     labels = np.empty((4, n), dtype=np.int64)
+    draw_kernel(U, weight, code, Q, table.world_all(obj.link_poses(qpos)), table.cell_prim, table.prim_part,
+                table.prim_link, table.part_semantic, out, labels)
     prim, part, semantic, link = labels
-    draw_kernel(counts, code, Q, U, torus_local, perm, table.world_all(L), table.cell_prim, table.prim_part,
-                table.prim_link, table.part_semantic, pts, nrm, prim, part, semantic, link)
+    links = obj.links
     return PointCloud(
-        points=pts,
-        normals=nrm,
+        points=out[0],
+        normals=out[1],
         semantic=semantic,
         instance=part,
         link=link,
         primitive=prim,
         semantic_names=SEMANTIC_LABELS,
-        instance_names=tuple(p.name for p in obj.parts),
-        link_names=tuple(lk.name for lk in obj.links),
+        instance_names=tuple([p.name for lk in links for p in lk.parts]),
+        link_names=tuple([lk.name for lk in links]),
     )
+
+
+def draw_plain(U, weight, code, Q, W, cell_prim, prim_part, prim_link, part_semantic, out, labels) -> None:
+    """The point draw in numpy: the definition that :func:`artipg.annotate.draw.draw_kernel`
+    (same arguments, same bits) compiles.
+
+    Point j takes the first cell whose cumulative weight exceeds ``U[0, j]`` times the
+    total weight and is placed on it by :func:`artipg.geometry.patches.place_family`
+    with ``u = U[1, j]``, ``v = U[2, j]``: directly in the object frame for the planar
+    families, whose cell parameters are posed first by the primitive's pose ``W``
+    (N, 3, 4); in the primitive's frame, then posed, for the others. Writes positions
+    and normals into ``out`` (2, n, 3) and primitive, part, semantic id and link into
+    ``labels`` (4, n).
+    """
+    cum = np.cumsum(weight)
+    cell = np.searchsorted(cum, U[0] * cum[-1], side="right")
+    fam = code[cell]
+    prim = cell_prim[cell]
+    pts, nrm = out
+    local = np.empty((6, U.shape[1]))
+    for name, f in FAMILY_CODE.items():
+        idx = np.flatnonzero(fam == f)
+        if not len(idx):
+            continue
+        q = Q[cell[idx], :FAMILIES[name]]
+        if f <= _PLANAR:
+            posed = _pose_planar(q, W[prim[idx]])
+            xyz = place_family(name, posed.T, U[1, idx], U[2, idx])
+            pts[idx] = xyz[:3].T
+            nrm[idx] = xyz[3:].T
+        else:
+            local[:, idx] = place_family(name, q.T, U[1, idx], U[2, idx])
+    idx = np.flatnonzero(fam > _PLANAR)
+    G = W[prim[idx]]  # (m, 3, 4)
+    x, y, z, nx, ny, nz = local[:, idx, None]
+    pts[idx] = ((G[:, :, 0] * x + G[:, :, 1] * y) + G[:, :, 2] * z) + G[:, :, 3]
+    nrm[idx] = (G[:, :, 0] * nx + G[:, :, 1] * ny) + G[:, :, 2] * nz
+    part = prim_part[prim]
+    labels[0] = prim
+    labels[1] = part
+    labels[2] = part_semantic[part]
+    labels[3] = prim_link[prim]
+
+
+#: Families up to this code (rect, tri, sector) are affine in their o, a, b, n: the draw
+#: poses their parameters instead of their points.
+_PLANAR = FAMILY_CODE["sector"]
+
+
+def _pose_planar(q: np.ndarray, G: np.ndarray) -> np.ndarray:
+    """Rect, tri or sector parameters ``q`` (m, p) posed by ``G`` (m, 3, 4): o as a point,
+    a, b and n as directions (the rest copied)."""
+    out = q.copy()
+    for r in range(0, 12, 3):
+        x, y, z = q[:, r:r + 1], q[:, r + 1:r + 2], q[:, r + 2:r + 3]  # (m, 1) each
+        out[:, r:r + 3] = (G[:, :, 0] * x + G[:, :, 1] * y) + G[:, :, 2] * z
+    out[:, 0:3] += G[:, :, 3]
+    return out
