@@ -214,7 +214,15 @@ class ParamRecorder:
             o = self.overrides.get(key)
             if o is not None:
                 v = min(hi, max(lo, float(o)))
-        self.record[key] = Param(key, "uniform", v, lo, hi)
+        # Param(key, "uniform", v, lo, hi) without its __init__ call: the most frequent draw
+        p = _new(Param)
+        p.name = key
+        p.kind = "uniform"
+        p.value = v
+        p.lo = lo
+        p.hi = hi
+        p.options = ()
+        self.record[key] = p
         return v
 
     def integers(self, name: str, lo: int, hi: int, fixed: int | None = None) -> int:
