@@ -284,6 +284,36 @@ def test_placer_is_the_translation_product_bit_for_bit():
             Placer(bad)
 
 
+def test_primitive_constructors_make_the_named_tuple():
+    import importlib
+
+    base, box, prism, revolve, tube = (importlib.import_module(f"artipg.geometry.{m}")  # geometry.prism is a function too
+                                       for m in ("base", "box", "prism", "revolve", "tube"))
+    T = translation(0.1, -0.2, 0.3)
+    f32, i64 = np.float32(0.25), np.int64(2)
+    cases = [
+        (box.cuboid(0.1, f32, i64, T, "r"), (box.Cuboid, (0.1, float(f32), 2.0), T, "r")),
+        (box.cuboid_between((0, -0.5, f32), np.array([1.0, 0.5, 2.0])),
+         (box.Cuboid, (1.0, 1.0, 2.0 - float(f32)), translation(0.5, 0.0, 0.5 * (float(f32) + 2.0)), "")),
+        (box.rect_ring(1, 2, 3, 0.5, 0.25), (box.RectRing, (1.0, 2.0, 3.0, 0.5, 0.25), IDENTITY, "")),
+        (prism.prism(0.1, 0.2, 6, T), (prism.Prism, (0.1, 0.2, 6.0), T, "")),
+        (prism.tri_prism(0.1, 0.2, 0.0, 0.3), (prism.TriPrism, (0.1, 0.2, 0.0, 0.3), IDENTITY, "")),
+        (revolve.cylinder(0.1, 0.2, role="c"), (revolve.Frustum, (0.1, 0.1, 0.2, 1.0, 1.0), IDENTITY, "c")),
+        (revolve.frustum(0.1, f32, 0.2), (revolve.Frustum, (0.1, float(f32), 0.2, 1.0, 1.0), IDENTITY, "")),
+        (revolve.ring(0.2, 0.1, 0.3, 1.0, T, "w", 0.01), (revolve.Ring, (0.2, 0.1, 0.3, 1.0, 0.01), T, "w")),
+        (revolve.sphere(0.2, -0.1, 0.1), (revolve.Sphere, (0.2, -0.1, 0.1), IDENTITY, "")),
+        (revolve.torus(0.2, 0.05, 1.0, T, "t", (1.0, 0.0)), (revolve.Torus, (0.2, 0.05, 1.0, 1.0, 0.0), T, "t")),
+    ]
+    for got, (geom, params, pose, role) in cases:
+        ref = base.Primitive(geom, params, pose, role)
+        assert type(got) is base.Primitive and got._fields == ref._fields
+        assert (got.geom, got.params, got.role) == (ref.geom, ref.params, ref.role)
+        assert [type(v) for v in got.params] == [float] * len(params)
+        assert got.pose.tobytes() == ref.pose.tobytes()
+    for got in tube.tube(0.01, [tube.line(0.1), tube.arc(0.05, 1.0)], pose=T, role="tube"):
+        assert type(got) is base.Primitive and got.role == "tube" and got.geom in (revolve.Frustum, revolve.Torus)
+
+
 def test_part_bounds_are_the_stacked_min_max():
     rng = np.random.default_rng(2)
     for n in (1, 2, 7):
