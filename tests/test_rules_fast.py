@@ -138,6 +138,20 @@ def test_uniform_records_what_param_init_does():
     assert rec.record["s.b"].value == 0.7
 
 
+def test_scoped_keys_are_the_dotted_names():
+    rec = ParamRecorder(np.random.default_rng(3), prefix="")
+    a = rec.scope("a")
+    b = a.scope("b")
+    top = ParamRecorder(np.random.default_rng(3), rec.record, prefix="slot")
+    a.uniform("u", 0, 1), b.integers("i", 0, 3), b.choice("c", ("x", "y")), rec.flag("f", 0.5), top.uniform("w", 0, 1)
+    top.scope("door").uniform("h", 0, 1, fixed=0.5)
+    assert list(rec.record) == ["a.u", "a.b.i", "a.b.c", "f", "slot.w", "slot.door.h"]
+    assert all(k == p.name for k, p in rec.record.items())
+    assert (rec.prefix, a.prefix, b.prefix, top.scope("door").prefix) == ("", "a", "a.b", "slot.door")
+    with pytest.raises(AttributeError):
+        a.prefix = "z"
+
+
 @pytest.mark.parametrize("seed", [0, 1, 12345, 2**64 + 7, 2**127 + 99])
 def test_stream_open_is_the_advanced_state(seed):
     bitgen = np.random.PCG64(0)
