@@ -8,8 +8,10 @@ bit-identical results.
 from __future__ import annotations
 
 import dataclasses
+import gc
 import math
 import pickle
+import weakref
 
 import numpy as np
 import pytest
@@ -17,8 +19,8 @@ import pytest
 import artipg
 import artipg.rules.category as category_module
 from artipg.geometry import cuboid
-from artipg.geometry.transforms import IDENTITY, rot_x, rot_y, rot_z, rotation, translation
-from artipg.model import ObjectBuilder, Part
+from artipg.geometry.transforms import IDENTITY, Placer, rot_x, rot_y, rot_z, rotation, translation
+from artipg.model import Grasp, ObjectBuilder, Part, Region
 from artipg.rules import Param, ParamRecorder
 from artipg.rules.streams import Streams, pcg_state, stream_key, streams
 
@@ -124,6 +126,32 @@ def test_param_keeps_its_dataclass_api():
     assert p.value == 0.3
 
 
+def test_uniform_records_what_param_init_does():
+    rec = ParamRecorder(np.random.default_rng(3), overrides={"s.b": 0.7})
+    p = rec.scope("s")
+    vals = [p.uniform("a", 0.1, 0.4), p.uniform("b", -1, 2), rec.uniform("c", 3, 3)]
+    for (key, got), v, (lo, hi) in zip(rec.record.items(), vals, [(0.1, 0.4), (-1.0, 2.0), (3.0, 3.0)]):
+        ref = Param(key, "uniform", v, lo, hi)
+        assert type(got) is Param and got == ref and repr(got) == repr(ref)
+        assert [type(getattr(got, f.name)) for f in dataclasses.fields(Param)] == \
+            [type(getattr(ref, f.name)) for f in dataclasses.fields(Param)]
+    assert rec.record["s.b"].value == 0.7
+
+
+def test_scoped_keys_are_the_dotted_names():
+    rec = ParamRecorder(np.random.default_rng(3), prefix="")
+    a = rec.scope("a")
+    b = a.scope("b")
+    top = ParamRecorder(np.random.default_rng(3), rec.record, prefix="slot")
+    a.uniform("u", 0, 1), b.integers("i", 0, 3), b.choice("c", ("x", "y")), rec.flag("f", 0.5), top.uniform("w", 0, 1)
+    top.scope("door").uniform("h", 0, 1, fixed=0.5)
+    assert list(rec.record) == ["a.u", "a.b.i", "a.b.c", "f", "slot.w", "slot.door.h"]
+    assert all(k == p.name for k, p in rec.record.items())
+    assert (rec.prefix, a.prefix, b.prefix, top.scope("door").prefix) == ("", "a", "a.b", "slot.door")
+    with pytest.raises(AttributeError):
+        a.prefix = "z"
+
+
 @pytest.mark.parametrize("seed", [0, 1, 12345, 2**64 + 7, 2**127 + 99])
 def test_stream_open_is_the_advanced_state(seed):
     bitgen = np.random.PCG64(0)
@@ -173,6 +201,131 @@ def test_part_init_defaults_validation_and_replace():
             assert getattr(d, f.name) is getattr(c, f.name), f.name
     assert d.name == "copy"
     assert "semantic='handle'" in repr(c)
+
+
+def test_region_and_grasp_init_as_the_generated_dataclass_init():
+    r = Region(("grip",))
+    assert (r.roles, r.box) == (("grip",), None) and Region() == Region((), None) and r == Region(roles=("grip",))
+    assert repr(r) == "Region(roles=('grip',), box=None)" and hash(r) == hash(Region(("grip",)))
+    box = np.zeros((2, 3))
+    assert Region(box=box).box is box
+    T = translation(1.0, 2.0, 3.0)
+    a, b = Grasp(T, 0.02), Grasp(pose=T, width=0.02)
+    assert a.pose is T and a.width == 0.02 and a.open_dir.tobytes() == np.zeros(3).tobytes()
+    assert a.open_dir is not b.open_dir and a.open_dir.flags.writeable  # a fresh array each
+    d = np.array([0.0, 0.0, 1.0])
+    assert Grasp(T, 0.02, d).open_dir is d and Grasp(T, 0.02, open_dir=None).open_dir is None
+    for obj, field in ((r, "roles"), (a, "width")):
+        with pytest.raises(dataclasses.FrozenInstanceError):
+            setattr(obj, field, 1)
+    assert [f.name for f in dataclasses.fields(Grasp)] == ["pose", "width", "open_dir"]
+    c = dataclasses.replace(a, width=0.05)
+    assert c.pose is T and c.open_dir is a.open_dir and c.width == 0.05
+    assert pickle.loads(pickle.dumps(r)) == r and pickle.loads(pickle.dumps(a)).width == 0.02
+    with pytest.raises(TypeError):
+        Grasp(T)
+
+
+def test_generated_objects_are_freed_without_the_cyclic_collector():
+    # the link builders refer to their builder weakly: no reference cycle keeps a
+    # dropped object's parts (and its parameter record) alive until a collection
+    enabled = gc.isenabled()
+    gc.disable()
+    try:
+        for c in artipg.categories():
+            obj = artipg.generate(c, 2)
+            parts = [weakref.ref(p) for p in obj.parts]
+            del obj
+            assert all(r() is None for r in parts), c
+    finally:
+        if enabled:
+            gc.enable()
+    b = ObjectBuilder()
+    root = b.create_link("base")
+    root.add(Part("body", "x", [cuboid(0.1, 0.1, 0.1)]))
+    assert b.build("c", "s", 0).parts[0].name == "body_0"
+    del b
+    with pytest.raises(ReferenceError):  # a link builder does not keep its builder alive
+        root.add(Part("body", "x", [cuboid(0.1, 0.1, 0.1)]))
+
+
+def _zero_rich_rotations(rng):
+    """Rigid (4, 4) transforms with many (signed) zeros, and random ones."""
+    flip = -np.eye(4)  # -0.0 everywhere off the diagonal, bottom row included
+    flip[3, 3] = 1.0
+    out = [np.eye(4), flip, IDENTITY]
+    for angle in (0.0, -0.0, math.pi / 2, -math.pi / 2, math.pi, -math.pi, 2 * math.pi):
+        out += [rot_x(angle), rot_y(angle), rot_z(angle)]
+    for _ in range(100):  # signed permutation matrices with -0.0 sprinkled in
+        M = np.eye(4)
+        M[:3, :3] = np.eye(3)[rng.permutation(3)] * rng.choice([-1.0, 1.0], 3)
+        M[:3, :3][M[:3, :3] == 0] *= rng.choice([-1.0, 1.0], 6)
+        out.append(M)
+    for _ in range(100):
+        out.append(rotation(rng.normal(size=3), rng.uniform(-7, 7)))
+    for M in list(out[-60:]):  # with a translation, some of it -0.0 or cancelling
+        M = M.copy()
+        M[:3, 3] = rng.choice([0.0, -0.0, 0.25, -1.5, 1e-300, rng.normal()], 3)
+        out.append(M)
+    M = rot_y(math.pi / 2)
+    M[:3, 3] = (-0.0, -0.0, -0.0)
+    out.append(M)
+    return out
+
+
+def test_placer_is_the_translation_product_bit_for_bit():
+    rng = np.random.default_rng(6)
+    values = [0.0, -0.0, 1.0, -1.0, 0.25, -1.5, 1e-300, -1e-300, 1e300, 3, -2, np.float64(-0.0),
+              np.float32(0.1), np.float32(-0.0), np.int64(5), True]
+    for M in _zero_rich_rotations(rng):
+        P = Placer(M)
+        assert P.matrix.tobytes() == np.asarray(M, dtype=float).tobytes() and not P.matrix.flags.writeable
+        for _ in range(20):
+            xyz = [values[i] for i in rng.integers(len(values), size=3)]
+            if rng.random() < 0.5:
+                xyz[int(rng.integers(3))] = float(rng.normal())
+            if rng.random() < 0.2:
+                xyz[int(rng.integers(3))] = -float(M[int(rng.integers(3)), 3])  # cancels: a zero sum
+            T = P.at(*xyz)
+            ref = translation(*xyz) @ M
+            assert T.tobytes() == ref.tobytes(), (M, xyz, T, ref)
+            assert T.flags.writeable and T.flags.c_contiguous and T.dtype == np.float64
+    T = Placer(rot_x(0.3)).at(1.0)
+    T[0, 0] = 7.0
+    assert Placer(rot_x(0.3)).at(1.0)[0, 0] == 1.0 and Placer(IDENTITY).at().tobytes() == np.eye(4).tobytes()
+    for bad in (np.eye(3), np.diag([1.0, 1.0, 1.0, 2.0]), np.full((4, 4), np.nan)):
+        with pytest.raises(ValueError, match="bottom row"):
+            Placer(bad)
+
+
+def test_primitive_constructors_make_the_named_tuple():
+    import importlib
+
+    base, box, prism, revolve, tube = (importlib.import_module(f"artipg.geometry.{m}")  # geometry.prism is a function too
+                                       for m in ("base", "box", "prism", "revolve", "tube"))
+    T = translation(0.1, -0.2, 0.3)
+    f32, i64 = np.float32(0.25), np.int64(2)
+    cases = [
+        (box.cuboid(0.1, f32, i64, T, "r"), (box.Cuboid, (0.1, float(f32), 2.0), T, "r")),
+        (box.cuboid_between((0, -0.5, f32), np.array([1.0, 0.5, 2.0])),
+         (box.Cuboid, (1.0, 1.0, 2.0 - float(f32)), translation(0.5, 0.0, 0.5 * (float(f32) + 2.0)), "")),
+        (box.rect_ring(1, 2, 3, 0.5, 0.25), (box.RectRing, (1.0, 2.0, 3.0, 0.5, 0.25), IDENTITY, "")),
+        (prism.prism(0.1, 0.2, 6, T), (prism.Prism, (0.1, 0.2, 6.0), T, "")),
+        (prism.tri_prism(0.1, 0.2, 0.0, 0.3), (prism.TriPrism, (0.1, 0.2, 0.0, 0.3), IDENTITY, "")),
+        (revolve.cylinder(0.1, 0.2, role="c"), (revolve.Frustum, (0.1, 0.1, 0.2, 1.0, 1.0), IDENTITY, "c")),
+        (revolve.frustum(0.1, f32, 0.2), (revolve.Frustum, (0.1, float(f32), 0.2, 1.0, 1.0), IDENTITY, "")),
+        (revolve.ring(0.2, 0.1, 0.3, 1.0, T, "w", 0.01), (revolve.Ring, (0.2, 0.1, 0.3, 1.0, 0.01), T, "w")),
+        (revolve.sphere(0.2, -0.1, 0.1), (revolve.Sphere, (0.2, -0.1, 0.1), IDENTITY, "")),
+        (revolve.torus(0.2, 0.05, 1.0, T, "t", (1.0, 0.0)), (revolve.Torus, (0.2, 0.05, 1.0, 1.0, 0.0), T, "t")),
+    ]
+    for got, (geom, params, pose, role) in cases:
+        ref = base.Primitive(geom, params, pose, role)
+        assert type(got) is base.Primitive and got._fields == ref._fields
+        assert (got.geom, got.params, got.role) == (ref.geom, ref.params, ref.role)
+        assert [type(v) for v in got.params] == [float] * len(params)
+        assert got.pose.tobytes() == ref.pose.tobytes()
+    for got in tube.tube(0.01, [tube.line(0.1), tube.arc(0.05, 1.0)], pose=T, role="tube"):
+        assert type(got) is base.Primitive and got.role == "tube" and got.geom in (revolve.Frustum, revolve.Torus)
 
 
 def test_part_bounds_are_the_stacked_min_max():

@@ -10,6 +10,10 @@ from artipg.geometry.base import CollisionPiece, GeometryTemplate, Primitive
 from artipg.geometry.patches import linear
 from artipg.geometry.transforms import IDENTITY, translation
 
+# Primitive(...) without the NamedTuple's Python-level __new__ (same tuple): the
+# constructors below run dozens of times per object
+_tuple_new = tuple.__new__
+
 
 def _box_tables():
     """Faces -x, +x, -y, +y, -z, +z of a box as linear maps of (sx, sy, sz).
@@ -261,15 +265,16 @@ _RING_COMP = np.arange(16)
 
 def cuboid(sx: float, sy: float, sz: float, pose: np.ndarray = IDENTITY, role: str = "") -> Primitive:
     """A :class:`Cuboid` of extents (sx, sy, sz) metres centred at ``pose``."""
-    return Primitive(Cuboid, (float(sx), float(sy), float(sz)), pose, role)
+    return _tuple_new(Primitive, (Cuboid, (float(sx), float(sy), float(sz)), pose, role))
 
 
 def cuboid_between(lo, hi, role: str = "") -> Primitive:
     """An axis-aligned :class:`Cuboid` spanning corners ``lo`` and ``hi`` (3,) in metres."""
-    return Primitive(Cuboid, (float(hi[0] - lo[0]), float(hi[1] - lo[1]), float(hi[2] - lo[2])),
-                     translation(0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1]), 0.5 * (lo[2] + hi[2])), role)
+    return _tuple_new(Primitive, (Cuboid, (float(hi[0] - lo[0]), float(hi[1] - lo[1]), float(hi[2] - lo[2])),
+                                  translation(0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1]), 0.5 * (lo[2] + hi[2])),
+                                  role))
 
 
 def rect_ring(ox, oy, depth, ix, iy, pose: np.ndarray = IDENTITY, role: str = "") -> Primitive:
     """A :class:`RectRing` frame (outer ox x oy, hole ix x iy, thickness ``depth`` along z)."""
-    return Primitive(RectRing, (float(ox), float(oy), float(depth), float(ix), float(iy)), pose, role)
+    return _tuple_new(Primitive, (RectRing, (float(ox), float(oy), float(depth), float(ix), float(iy)), pose, role))

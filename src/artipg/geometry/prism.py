@@ -11,6 +11,10 @@ from artipg.geometry.base import TWO_PI, GeometryTemplate, Primitive, polygon_sd
 from artipg.geometry.patches import Patch, cross_norm
 from artipg.geometry.transforms import IDENTITY
 
+# Primitive(...) without the NamedTuple's Python-level __new__ (same tuple): the
+# constructors below run dozens of times per object
+_tuple_new = tuple.__new__
+
 MAX_SIDES = 16
 _SIDE_COMP, _END_COMP = np.array([0, 1, 2]), np.array([3, 4])
 
@@ -228,9 +232,9 @@ def prism(r: float, h: float, n: int, pose: np.ndarray = IDENTITY, role: str = "
     """Regular ``n``-gon prism (3 <= n <= 16) of circumradius ``r`` and height ``h``."""
     if not 3 <= n <= MAX_SIDES:
         raise ValueError(f"prism needs 3..{MAX_SIDES} sides, got {n}")
-    return Primitive(Prism, (float(r), float(h), float(n)), pose, role)
+    return _tuple_new(Primitive, (Prism, (float(r), float(h), float(n)), pose, role))
 
 
 def tri_prism(w: float, t: float, a: float, depth: float, pose: np.ndarray = IDENTITY, role: str = "") -> Primitive:
     """Triangular prism with base ``w``, height ``t``, apex x-offset ``a``, depth along z."""
-    return Primitive(TriPrism, (float(w), float(t), float(a), float(depth)), pose, role)
+    return _tuple_new(Primitive, (TriPrism, (float(w), float(t), float(a), float(depth)), pose, role))

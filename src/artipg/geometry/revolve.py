@@ -22,6 +22,10 @@ from artipg.geometry.base import (
 from artipg.geometry.patches import Patch, compile_linear, linear, rects, sectors
 from artipg.geometry.transforms import IDENTITY, rot_z
 
+# Primitive(...) without the NamedTuple's Python-level __new__ (same tuple): the
+# constructors below run dozens of times per object
+_tuple_new = tuple.__new__
+
 FULL = TWO_PI
 # patch layouts shared by the solids of revolution: (2, 1) columns broadcast over rows
 _X, _Y = (1.0, 0.0, 0.0), (0.0, 1.0, 0.0)
@@ -602,19 +606,20 @@ def sector_hulls(profile: np.ndarray, arc: float, r_concave: float) -> list[Coll
 
 def cylinder(radius: float, height: float, pose: np.ndarray = IDENTITY, role: str = "") -> Primitive:
     """Closed cylinder of ``radius`` and ``height`` (metres) along local z, centred."""
-    return Primitive(Frustum, (float(radius), float(radius), float(height), 1.0, 1.0), pose, role)
+    return _tuple_new(Primitive, (Frustum, (float(radius), float(radius), float(height), 1.0, 1.0), pose, role))
 
 
 def frustum(r_bottom: float, r_top: float, height: float, pose: np.ndarray = IDENTITY, role: str = "") -> Primitive:
     """Closed frustum (a cone when ``r_top`` = 0) along local z, centred."""
-    return Primitive(Frustum, (float(r_bottom), float(r_top), float(height), 1.0, 1.0), pose, role)
+    return _tuple_new(Primitive, (Frustum, (float(r_bottom), float(r_top), float(height), 1.0, 1.0), pose, role))
 
 
 def ring(r_out: float, r_in: float, height: float, arc: float = FULL, pose: np.ndarray = IDENTITY,
          role: str = "", taper: float = 0.0) -> Primitive:
     """Hollow cylinder wall (radii at the bottom), optionally a partial arc (radians)
     starting at +x, optionally tapered (radii grow by ``taper`` towards the top)."""
-    return Primitive(Ring, (float(r_out), float(r_in), float(height), float(arc), float(taper)), pose, role)
+    return _tuple_new(Primitive, (Ring, (float(r_out), float(r_in), float(height), float(arc), float(taper)),
+                                  pose, role))
 
 
 def sphere(radius: float, z_lo: float | None = None, z_hi: float | None = None,
@@ -622,13 +627,13 @@ def sphere(radius: float, z_lo: float | None = None, z_hi: float | None = None,
     """Sphere (segment): keeps ``z_lo <= z <= z_hi`` of a sphere centred at ``pose``."""
     lo = -radius if z_lo is None else z_lo
     hi = radius if z_hi is None else z_hi
-    return Primitive(Sphere, (float(radius), float(lo), float(hi)), pose, role)
+    return _tuple_new(Primitive, (Sphere, (float(radius), float(lo), float(hi)), pose, role))
 
 
 def torus(R: float, r: float, arc: float = FULL, pose: np.ndarray = IDENTITY, role: str = "",
           caps: tuple[bool, bool] = (True, True)) -> Primitive:
     """Torus (arc) about local z; centre-line radius ``R``, tube radius ``r``."""
-    return Primitive(Torus, (float(R), float(r), float(arc), float(caps[0]), float(caps[1])), pose, role)
+    return _tuple_new(Primitive, (Torus, (float(R), float(r), float(arc), float(caps[0]), float(caps[1])), pose, role))
 
 
 # cap parameters are affine in the template parameters: one matrix product per object

@@ -24,6 +24,52 @@ def translation(x: float = 0.0, y: float = 0.0, z: float = 0.0) -> np.ndarray:
     return T
 
 
+class Placer:
+    """A constant rigid transform ``M`` to be placed at many points.
+
+    ``Placer(M).at(x, y, z)`` is ``translation(x, y, z) @ M`` bit for bit, without the
+    matrix product (templates place constant axis turns this way at dozens of sites).
+
+    Parameters
+    ----------
+    M : (4, 4) array_like
+        Finite, with bottom row ``(0, 0, 0, 1)`` (a rotation, optionally with a
+        translation); kept as a read-only copy in :attr:`matrix`.
+
+    Notes
+    -----
+    Every term of ``(T @ M)[i, j] = sum_k T[i, k] * M[k, j]`` is a signed zero except
+    ``M[i, j]`` (and ``x * 1.0`` in the last column), so the product is exact in any
+    summation order, with or without fused multiply-adds: ``M[i, j]``, and
+    ``M[i, 3] + x`` rounded once. Only the sign of a zero result is left to the
+    product: numpy's matmul (BLAS or not) starts its sums at +0.0, so it is +0.0. The
+    placer therefore stores ``M + 0.0`` (its -0.0 made +0.0) and adds the translation
+    to a last column that holds no -0.0, whose sums cannot be -0.0 either
+    (tests/test_rules_fast.py checks it against the product, zeros included).
+    """
+
+    __slots__ = ("matrix", "_m", "_t")
+
+    def __init__(self, M):
+        M = np.array(M, dtype=float)
+        if M.shape != (4, 4) or not np.isfinite(M).all() or M[3].tolist() != [0.0, 0.0, 0.0, 1.0]:
+            raise ValueError(f"Placer needs a finite (4, 4) matrix with bottom row (0, 0, 0, 1), got {M!r}")
+        M.flags.writeable = False
+        self.matrix = M
+        self._m = M + 0.0
+        self._t = tuple(self._m[:3, 3].tolist())
+
+    def at(self, x: float = 0.0, y: float = 0.0, z: float = 0.0) -> np.ndarray:
+        """``translation(x, y, z) @ matrix`` (4, 4) for finite ``x, y, z`` (metres)."""
+        T = self._m.copy()
+        tx, ty, tz = self._t
+        # float() first: a float32 or int argument converts exactly, as translation() does
+        T[0, 3] = float(x) + tx
+        T[1, 3] = float(y) + ty
+        T[2, 3] = float(z) + tz
+        return T
+
+
 def rotation(axis, angle: float, about=None) -> np.ndarray:
     """Rotation by ``angle`` radians about unit-length ``axis`` (3,).
 

@@ -98,7 +98,8 @@ class Tube:
                 params.append((R, r, abs(turn), c0, c1))
         # one stacked product places every piece (the same 4x4 product for each)
         placed = pose @ np.array(frames).reshape(n, 4, 4)
-        return [Primitive(g, p, T, role) for g, p, T in zip(kinds, params, placed)]
+        new = tuple.__new__  # Primitive(...) without the NamedTuple's Python-level __new__
+        return [new(Primitive, (g, p, T, role)) for g, p, T in zip(kinds, params, placed)]
 
     def _stations(self, step: float = math.pi / 16):
         """Centre-line stations (point (3,), heading) for the loft."""

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import weakref
 
 import numpy as np
 
@@ -12,10 +13,18 @@ from artipg.model.part import Part
 
 
 class LinkBuilder:
-    """A link under construction. Obtain one from :meth:`ObjectBuilder.create_link`."""
+    """A link under construction. Obtain one from :meth:`ObjectBuilder.create_link`.
+
+    It refers to its :class:`ObjectBuilder` weakly, so keep the builder while adding
+    parts (a link builder whose builder is gone raises ``ReferenceError``).
+    """
 
     def __init__(self, owner: "ObjectBuilder", name: str, parent: "LinkBuilder | None"):
-        self._owner = owner
+        # a strong reference would close the cycle builder -> link builders -> builder,
+        # and every finished object (its parts and parameter record, reachable from
+        # the builder) would then wait for the cyclic garbage collector instead of
+        # being freed when dropped; that collector's passes cost more than the proxy
+        self._owner = weakref.proxy(owner)
         self.name = name
         self.parent = parent
         self.link = Link(name)

@@ -11,7 +11,23 @@ from artipg.geometry.transforms import IDENTITY
 from artipg.vocabulary import ACTIONABLE_ID, AFFORDANCES, LABEL_ID, label_id
 
 
-@dataclass(frozen=True)
+class _Factory:
+    """Default of a field that gets a fresh empty container (shown as in dataclasses)."""
+
+    __slots__ = ()
+
+    def __repr__(self) -> str:
+        return "<factory>"
+
+
+_FACTORY = _Factory()
+_zeros = np.zeros
+
+
+# Region and Grasp: frozen dataclasses with hand-written __init__ (init=False) that fill
+# the instance dict directly: the generated one calls object.__setattr__ per field (and
+# a factory per default), and templates make a dozen of them per object.
+@dataclass(frozen=True, init=False)
 class Region:
     """An analytic surface region of a part (affordance knowledge).
 
@@ -23,31 +39,31 @@ class Region:
     roles: tuple[str, ...] = ()
     box: np.ndarray | None = None
 
+    def __init__(self, roles: tuple[str, ...] = (), box: np.ndarray | None = None):
+        d = self.__dict__
+        d["roles"] = roles
+        d["box"] = box
 
-@dataclass(frozen=True)
+
+@dataclass(frozen=True, init=False)
 class Grasp:
     """A parallel-jaw grasp in the part frame.
 
     ``pose`` (4, 4): gripper frame with +z the approach direction (towards the part) and
     +y the jaw-closing axis, origin between the finger tips. ``width`` is the opening in
-    metres. ``open_dir`` (3,) is the direction that opens the part, or zeros.
+    metres. ``open_dir`` (3,) is the direction that opens the part, or zeros (a fresh
+    array when omitted).
     """
 
     pose: np.ndarray
     width: float
     open_dir: np.ndarray = field(default_factory=lambda: np.zeros(3))
 
-
-class _Factory:
-    """Default of a field that gets a fresh empty container (shown as in dataclasses)."""
-
-    __slots__ = ()
-
-    def __repr__(self) -> str:
-        return "<factory>"
-
-
-_FACTORY = _Factory()
+    def __init__(self, pose: np.ndarray, width: float, open_dir: np.ndarray = _FACTORY):
+        d = self.__dict__
+        d["pose"] = pose
+        d["width"] = width
+        d["open_dir"] = _zeros(3) if open_dir is _FACTORY else open_dir
 _AFFORDANCE_SET = frozenset(AFFORDANCES)
 
 

@@ -165,7 +165,7 @@ class ParamRecorder:
         to PCG64 and PCG64DXSM generators; others are read one double at a time.
     """
 
-    __slots__ = ("_draws", "_buf", "record", "overrides", "prefix")
+    __slots__ = ("_draws", "_buf", "record", "overrides", "_prefix", "_dot")
 
     def __init__(self, rng: np.random.Generator, record: dict | None = None,
                  overrides: dict | None = None, prefix: str = "", *, read_ahead: bool = False):
@@ -173,7 +173,8 @@ class ParamRecorder:
         self._buf = self._draws.buf
         self.record = {} if record is None else record
         self.overrides = overrides or {}
-        self.prefix = prefix
+        self._prefix = prefix
+        self._dot = f"{prefix}." if prefix else ""  # each key is _dot + name
 
     @property
     def rng(self) -> np.random.Generator:
@@ -192,15 +193,18 @@ class ParamRecorder:
         s._buf = self._buf
         s.record = self.record
         s.overrides = self.overrides
-        s.prefix = self._key(name)
+        s._prefix = key = self._dot + name
+        s._dot = key + "."
         return s
 
-    def _key(self, name: str) -> str:
-        return f"{self.prefix}.{name}" if self.prefix else name
+    @property
+    def prefix(self) -> str:
+        """The scope's name prefix (without the dot); read-only."""
+        return self._prefix
 
     def uniform(self, name: str, lo: float, hi: float, fixed: float | None = None) -> float:
         """Uniform value in [lo, hi]; ``fixed`` (set by a parent) is recorded instead."""
-        key = f"{self.prefix}.{name}" if self.prefix else name
+        key = self._dot + name
         if fixed is not None:
             v = float(fixed)
             self.record[key] = Param(key, "fixed", v)
@@ -214,12 +218,20 @@ class ParamRecorder:
             o = self.overrides.get(key)
             if o is not None:
                 v = min(hi, max(lo, float(o)))
-        self.record[key] = Param(key, "uniform", v, lo, hi)
+        # Param(key, "uniform", v, lo, hi) without its __init__ call: the most frequent draw
+        p = _new(Param)
+        p.name = key
+        p.kind = "uniform"
+        p.value = v
+        p.lo = lo
+        p.hi = hi
+        p.options = ()
+        self.record[key] = p
         return v
 
     def integers(self, name: str, lo: int, hi: int, fixed: int | None = None) -> int:
         """Uniform integer in [lo, hi] (both inclusive)."""
-        key = f"{self.prefix}.{name}" if self.prefix else name
+        key = self._dot + name
         if fixed is not None:
             self.record[key] = Param(key, "fixed", int(fixed))
             return int(fixed)
@@ -241,7 +253,7 @@ class ParamRecorder:
         ``options`` is a dict {option: weight} or a sequence (equal weights). Options
         may be strings or functions (part templates); an override names the option.
         """
-        key = f"{self.prefix}.{name}" if self.prefix else name
+        key = self._dot + name
         opts, w, names, total = _options(options)
         if fixed is not None:
             self.record[key] = Param(key, "fixed", option_name(fixed))
@@ -263,7 +275,7 @@ class ParamRecorder:
 
     def flag(self, name: str, p: float, fixed: bool | None = None) -> bool:
         """True with probability ``p``."""
-        key = f"{self.prefix}.{name}" if self.prefix else name
+        key = self._dot + name
         if fixed is not None:
             self.record[key] = Param(key, "fixed", bool(fixed))
             return bool(fixed)
