@@ -20,7 +20,7 @@ from __future__ import annotations
 import math
 
 from artipg.geometry import cuboid_between
-from artipg.geometry.transforms import rot_x, rot_y, rot_z, translation
+from artipg.geometry.transforms import Placer, rot_x, rot_y, rot_z, translation
 from artipg.model.part import Part, Region
 from artipg.rules import Category, Slot
 from artipg.templates.boxes import HINGED_LIDS, cap_lid, flap, grooved_box, mount_lid, open_box, raised_lid, slab_lid
@@ -40,9 +40,9 @@ LIDS = {"hinged_box": HINGED_LIDS, "chest": {slab_lid: 2.0, raised_lid: 1.0}, "d
 KNOBS = {knob_pull: 2.0, ball_knob_pull: 1.0, arch_handle: 1.0}
 ROUND_KNOBS = {knob_pull: 1.0, ball_knob_pull: 1.0}
 SIDE_HANDLES = {arch_handle: 1.0, flat_bar_handle: 1.0}
-ALONG_X = rot_y(math.pi / 2)  # local z -> +x
+ALONG_X = Placer(rot_y(math.pi / 2))  # local z -> +x
 FLAT = rot_x(math.pi / 2)  # a handle's long axis along y
-SIDE_TURN = {s: rot_z(-s * math.pi / 2) for s in (1.0, -1.0)}  # a side handle facing out of side s (+-y)
+SIDE_TURN = {s: Placer(rot_z(-s * math.pi / 2)) for s in (1.0, -1.0)}  # a side handle facing out of side s (+-y)
 
 
 def body(ctx):
@@ -109,7 +109,7 @@ def _sliding(ctx, root, part, D, W, lid_t):
                          limits=(0.0, p.uniform("travel", 0.6, 0.85) * L), name="lid")
     if p.flag("has_knob", 0.5):
         k = ctx.choose("knob", ROUND_KNOBS)(p.scope("knob"))
-        link.add(k, translation(0.15 * L, 0, lid_t) @ ALONG_X)
+        link.add(k, ALONG_X.at(0.15 * L, 0, lid_t))
     else:
         link.add(Part("handle", "finger_ridge", [cuboid_between((0.04 * L, -0.3 * Wl, lid_t), (0.04 * L + 0.006,
                                                                                                0.3 * Wl, lid_t + 0.003),
@@ -129,7 +129,7 @@ def extras(ctx):
         tmpl = ctx.choose("side_handle", SIDE_HANDLES)
         hl = p.uniform("side_handle_length", 0.1, 0.16)
         for i, s in enumerate((1.0, -1.0)):
-            pose = translation(0, s * W / 2, top - 0.12) @ SIDE_TURN[s] @ FLAT
+            pose = SIDE_TURN[s].at(0, s * W / 2, top - 0.12) @ FLAT
             root.add(tmpl(p.scope(f"side_handle{i}"), length=hl), pose)
     if ctx.sub not in ("hinged_box", "chest") or not bay:
         return

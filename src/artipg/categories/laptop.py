@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import math
 
-from artipg.geometry.transforms import rot_y, translation
+from artipg.geometry.transforms import Placer, rot_y, translation
 from artipg.rules import Category, Slot
 from artipg.templates.controls import button_bezel, mount_button, rect_button, round_button
 from artipg.templates.laptop import KEYBOARDS, laptop_base, screen_lid, touchpad
@@ -26,7 +26,7 @@ SIZES = {"ultrabook": ((0.29, 0.33), (0.195, 0.23), (0.009, 0.014), (0.004, 0.00
          "mainstream": ((0.32, 0.38), (0.22, 0.26), (0.015, 0.022), (0.006, 0.009), (0.3, 0.45)),
          "business": ((0.31, 0.36), (0.21, 0.25), (0.015, 0.02), (0.006, 0.009), (0.28, 0.35)),
          "gaming": ((0.35, 0.40), (0.25, 0.29), (0.02, 0.028), (0.008, 0.012), (0.3, 0.4))}
-_FACE_UP = rot_y(math.pi / 2)  # control frame (surface normal -x) -> surface normal +z
+_FACE_UP = Placer(rot_y(math.pi / 2))  # control frame (surface normal -x) -> surface normal +z
 
 
 def base(ctx):
@@ -55,12 +55,12 @@ def base(ctx):
     tops = [kh]
     for i in range(3 if bd else 0):
         tops.append(_button(ctx, root, rect_button, p.scope(f"pad_button{i}"),
-                            translation(xk - 0.004 - bd / 2, (i - 1) * bw / 3, z) @ _FACE_UP, width=bw / 3 - 0.006,
+                            _FACE_UP.at(xk - 0.004 - bd / 2, (i - 1) * bw / 3, z), width=bw / 3 - 0.006,
                             height=bd))
     if power:
         y = p.choice("power_side", (1.0, -1.0)) * (W / 2 - max(side, 0.02) - 0.01)
-        tops.append(_button(ctx, root, round_button, p.scope("power"), translation(D / 2 - back / 2 - 0.003, y, z)
-                            @ _FACE_UP, radius=p.uniform("power_radius", 0.003, 0.005)))
+        tops.append(_button(ctx, root, round_button, p.scope("power"), _FACE_UP.at(D / 2 - back / 2 - 0.003, y, z),
+                            radius=p.uniform("power_radius", 0.003, 0.005)))
     return root, part, W, D, max(tops)
 
 

@@ -21,7 +21,7 @@ from __future__ import annotations
 import math
 
 from artipg.geometry import cuboid_between, cylinder, ring
-from artipg.geometry.transforms import rot_y, translation
+from artipg.geometry.transforms import Placer, rot_y, translation
 from artipg.model.part import Part
 from artipg.rules import Category, Slot
 from artipg.templates.bodies import carcass
@@ -39,7 +39,7 @@ SUBS = {  # width, height, depth ranges, door radius range
     "top_loader": ((0.6, 0.7), (0.9, 0.95), (0.62, 0.7), None),
     "twin_tub": ((0.7, 0.8), (0.8, 0.9), (0.4, 0.46), None),
 }
-_ALONG_X = rot_y(math.pi / 2)
+_ALONG_X = Placer(rot_y(math.pi / 2))
 DOOR_HANDLES = {edge_pull: 1.0, flat_bar_handle: 1.0}
 HINGES = {"+y": 4.0, "-y": 1.0}  # front-loader doors are mostly hinged on the left
 
@@ -67,7 +67,7 @@ def body(ctx):
     hole = R * p.uniform("hole", 0.72, 0.82)
     root.add(porthole_panel(p.scope("porthole"), W, 2 * hp, hole, tp), translation(-D / 2, 0, cz))
     gd, ro = p.uniform("gasket_depth", 0.04, 0.07), hole - p.uniform("gasket", 0.02, 0.035)
-    gasket = ring(hole, ro, gd, pose=translation(-D / 2 - tp + gd / 2, 0, cz) @ _ALONG_X, role="gasket")
+    gasket = ring(hole, ro, gd, pose=_ALONG_X.at(-D / 2 - tp + gd / 2, 0, cz), role="gasket")
     root.add(Part("body", "gasket", [gasket]))
     rdr = min(W / 2 - wall, cz - zk - wall, zs - cz) - 0.012
     x0, axle = -D / 2 - tp + gd + 0.005, 0.03

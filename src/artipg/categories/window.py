@@ -21,7 +21,7 @@ import copy
 import math
 
 from artipg.geometry import cuboid_between
-from artipg.geometry.transforms import rot_x, translation
+from artipg.geometry.transforms import Placer, rot_x, translation
 from artipg.rules import Category, Slot
 from artipg.templates.frames import glazed_panel, inset_leaf, sash_tracks, stop_ring, window_frame
 from artipg.templates.handles import arch_handle, edge_pull, flat_bar_handle
@@ -36,7 +36,7 @@ SIZES = {"casement": ((0.4, 0.75), (0.6, 1.6), (1, 3), (0.045, 0.07)),
          "double_hung": ((0.5, 1.2), (0.9, 1.8), (2, 2), (0.035, 0.045))}
 PULLS = {arch_handle: 1.0, flat_bar_handle: 1.0, edge_pull: 1.0}
 AWNING_HINGES = {"+z": 2.0, "-z": 1.0}
-FLAT = rot_x(math.pi / 2)  # a pull's long axis along y
+FLAT = Placer(rot_x(math.pi / 2))  # a pull's long axis along y
 
 
 def frame(ctx):
@@ -113,7 +113,7 @@ def sashes(ctx):
                           (0.0, math.pi / 2), name="handle", axis=(sgn, 0.0, 0.0))  # towards the hinge
         else:
             hp, built = replay(hq) if built else hq, True
-            link.add(pull_t(hp, length=min(0.2, 0.4 * sw)), front @ FLAT)
+            link.add(pull_t(hp, length=min(0.2, 0.4 * sw)), front @ FLAT.matrix)
 
 
 def _place(ctx, root, sash, origin, axis=None, travel=0.0):
@@ -168,7 +168,7 @@ def _hung(ctx, root, d, c, sash, rail):
     for i in range(k):
         y = 0.0 if k == 1 else (i - 0.5) * 0.5 * ws
         h = tmpl(p.scope(f"lift{i}"), length=min(0.12, 0.25 * ws))
-        link.add(h, translation(-ts, y, -hs / 2 + rail / 2) @ FLAT)
+        link.add(h, FLAT.at(-ts, y, -hs / 2 + rail / 2))
 
 
 RULE = Category(

@@ -17,11 +17,11 @@ from __future__ import annotations
 import numpy as np
 
 from artipg.geometry import cuboid, cuboid_between, cylinder, rect_ring
-from artipg.geometry.transforms import rot_y, translation
+from artipg.geometry.transforms import Placer, rot_y, translation
 from artipg.model.part import Part, Region
 from artipg.templates.panels import door_edge_grasps
 
-_FRAME_TO_X = rot_y(np.pi / 2)  # rect ring's z (thickness) -> x
+_FRAME_TO_X = Placer(rot_y(np.pi / 2))  # rect ring's z (thickness) -> x
 
 
 def appliance_housing(p, depth: float, width: float, height: float, bay_width: float, bay_side: str = "-y") -> Part:
@@ -103,7 +103,7 @@ def window_door(p, width: float, height: float, thickness: float | None = None, 
     fw = width - latch
     cy = -s * latch / 2  # centre of the framed part
     frame = rect_ring(height, fw, t, height - 2 * rail, fw - 2 * rail,
-                      translation(-t / 2, cy, 0) @ _FRAME_TO_X, role="panel")
+                      _FRAME_TO_X.at(-t / 2, cy, 0), role="panel")
     gt = p.uniform("glass_thickness", 0.004, 0.008)
     prims = [frame, cuboid(gt, fw - 2 * rail, height - 2 * rail, translation(-t / 2, cy, 0), role="glass")]
     if latch > 1e-3:

@@ -22,11 +22,11 @@ import math
 import numpy as np
 
 from artipg.geometry import cuboid, cuboid_between, cylinder, rect_ring, ring, sphere
-from artipg.geometry.transforms import rot_x, rot_y, translation
+from artipg.geometry.transforms import Placer, rot_x, rot_y, translation
 from artipg.model.part import Part, Region
 
-_Y = rot_x(math.pi / 2)    # local z -> -y
-_X = rot_y(math.pi / 2)    # local z -> +x
+_Y = Placer(rot_x(math.pi / 2))  # local z -> -y
+_X = Placer(rot_y(math.pi / 2))  # local z -> +x
 
 
 def _round_lid(template, prims, R, top) -> Part:
@@ -72,7 +72,7 @@ def pedal(p, width: float | None = None) -> Part:
     r = p.uniform("pin_radius", 0.004, 0.007)
     aw, at = p.uniform("arm_width", 0.3, 0.6) * w, p.uniform("arm_thickness", 0.004, 0.008)
     pl, pt = p.uniform("plate_length", 0.03, 0.05), p.uniform("plate_thickness", 0.006, 0.012)
-    prims = [cylinder(r, aw + 0.02, _Y, role="pin"),
+    prims = [cylinder(r, aw + 0.02, _Y.matrix, role="pin"),
              cuboid_between((-L, -aw / 2, -at / 2), (0.0, aw / 2, at / 2), role="arm"),
              cuboid_between((-L - pl, -w / 2, -at / 2), (-L + 0.002, w / 2, -at / 2 + pt), role="plate")]
     top = np.array([[-L - pl, -w / 2, -at / 2 + pt - 1e-4], [-L, w / 2, -at / 2 + pt + 1e-4]])
@@ -91,7 +91,7 @@ def swing_hood(p, depth: float, width: float, flap_width: float, flap_height: fl
              cuboid_between((D - t, -W, 0), (D, W, h), role="wall"),
              cuboid_between((-D, -W, 0), (D - t, -W + t, h), role="wall"),
              cuboid_between((-D, W - t, 0), (D - t, W, h), role="wall"),
-             rect_ring(h, width - 2 * t, t, flap_height, flap_width, translation(-D + t / 2, 0, h / 2) @ _X,
+             rect_ring(h, width - 2 * t, t, flap_height, flap_width, _X.at(-D + t / 2, 0, h / 2),
                        role="wall")]
     return Part("body", "swing_hood", prims, anchors={"opening": (-D + t / 2, 0.0, h / 2), "top": (0.0, 0.0, h + t),
                                                       "thickness": (t, 0.0, 0.0)})
@@ -102,7 +102,7 @@ def swing_flap(p, width: float, height: float, thickness: float | None = None, p
     pivot pins reaching ``pin`` metres past its side edges."""
     t = p.uniform("thickness", 0.002, 0.004, fixed=thickness)
     face = np.array([[-t / 2 - 1e-4, -width / 2, -height / 2], [-t / 2 + 1e-4, width / 2, height / 2]])
-    pins = [cylinder(0.003, pin + 0.004, translation(0, s * (width / 2 + pin / 2 - 0.002), 0) @ _Y, role="pin")
+    pins = [cylinder(0.003, pin + 0.004, _Y.at(0, s * (width / 2 + pin / 2 - 0.002), 0), role="pin")
             for s in (-1.0, 1.0)]
     return Part("flap", "swing_flap", [cuboid(t, width, height, role="plate"), *pins],
                 regions={"push": Region((), face)}, actionable="hinge_lid")

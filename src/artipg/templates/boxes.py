@@ -15,13 +15,13 @@ import math
 import numpy as np
 
 from artipg.geometry import cuboid_between, rect_ring, tri_prism
-from artipg.geometry.transforms import IDENTITY, rot_x, rot_z, translation
+from artipg.geometry.transforms import IDENTITY, Placer, rot_x, rot_z, translation
 from artipg.model.part import Part, Region
 
 #: hinge edge of a box -> yaw of the lid frame (the lid extends towards its local -x)
 EDGE_YAW = {"+x": 0.0, "+y": math.pi / 2, "-x": math.pi, "-y": -math.pi / 2}
-_EDGE_TURN = {edge: rot_z(yaw) for edge, yaw in EDGE_YAW.items()}
-_FLAT = rot_x(math.pi / 2)  # a prism's triangle in the x-z plane
+_EDGE_TURN = {edge: Placer(rot_z(yaw)) for edge, yaw in EDGE_YAW.items()}
+_FLAT = Placer(rot_x(math.pi / 2))  # a prism's triangle in the x-z plane
 
 
 def open_box(p, depth: float, width: float, height: float, wall: float | None = None, z0: float = 0.0,
@@ -98,7 +98,7 @@ def gable_lid(p, length: float, width: float, thickness: float | None = None) ->
     t = p.uniform("thickness", 0.008, 0.02, fixed=thickness)
     h = p.uniform("pitch", 0.06, 0.15) * length
     prims = [cuboid_between((-length, -width / 2, 0), (0, width / 2, t), role="top"),
-             tri_prism(length, h, 0.0, width, translation(-length / 2, 0, t) @ _FLAT, role="top")]
+             tri_prism(length, h, 0.0, width, _FLAT.at(-length / 2, 0, t), role="top")]
     return _lid("gable_lid", prims, length, width, t + h)
 
 
@@ -136,6 +136,6 @@ def mount_lid(builder, parent, part, axis_point, edge: str, limits, name: str = 
     (4, 4) places the part in the joint frame (e.g. lowered for a lid set flush in an
     opening, whose axis is its top back edge)."""
     link = builder.create_link(name, parent)
-    link.set_joint("revolute", translation(*axis_point) @ _EDGE_TURN[edge], axis=(0.0, 1.0, 0.0), limits=limits)
+    link.set_joint("revolute", _EDGE_TURN[edge].at(*axis_point), axis=(0.0, 1.0, 0.0), limits=limits)
     link.add(part, IDENTITY if pose is None else pose)
     return link

@@ -23,7 +23,7 @@ from __future__ import annotations
 import math
 
 from artipg.geometry import cylinder, frustum, ring
-from artipg.geometry.transforms import rot_y, translation
+from artipg.geometry.transforms import Placer, rot_y, translation
 from artipg.model.part import Part, Region
 from artipg.templates.levers import top_grasp
 
@@ -33,7 +33,7 @@ from artipg.templates.levers import top_grasp
 #: round surface (``artipg.geometry.revolve.SECTOR_SAGITTA``), or the skirt the simulators
 #: see cuts into the neck they see.
 CLEAR = 0.0008
-_ALONG_X = rot_y(math.pi / 2)  # local z -> +x
+_ALONG_X = Placer(rot_y(math.pi / 2))  # local z -> +x
 
 
 def screw_cap(p, neck_r: float, neck_h: float, height: float | None = None) -> Part:
@@ -146,8 +146,8 @@ def pump_top(p, builder, parent, pose, neck):
                 regions={"press": Region(("head",)), "push": Region(("head",))},
                 grasps=[top_grasp(0.0, 0.0, stem_hi + hh / 2, 2 * rh + 0.02, "y", (0.0, 0.0, -1.0))],
                 actionable="slider_button")
-    tip = Part("nozzle", "pump_nozzle", [cylinder(rz, nz + rh / 2, translation(-(nz + rh / 2) / 2, 0, stem_hi + hh / 2)
-                                                  @ _ALONG_X, role="nozzle")])
+    tip = Part("nozzle", "pump_nozzle", [cylinder(rz, nz + rh / 2, _ALONG_X.at(-(nz + rh / 2) / 2, 0, stem_hi + hh / 2),
+                                                  role="nozzle")])
     pl = builder.create_link("pump", link)
     pl.set_joint("prismatic", translation(), axis=(0.0, 0.0, -1.0), limits=(0.0, travel))
     pl.add(head)

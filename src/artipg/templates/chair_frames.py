@@ -22,13 +22,13 @@ import math
 import numpy as np
 
 from artipg.geometry import cuboid, cuboid_between, cylinder, frustum, ring, torus, tube
-from artipg.geometry.transforms import rot_x, rot_y, rot_z, translation
+from artipg.geometry.transforms import Placer, rot_x, rot_y, rot_z, translation
 from artipg.geometry.tube import arc, line
 from artipg.model.part import Part, Region
 from artipg.templates.extents import span
 from artipg.templates.seating import turns
 
-_ALONG_Y = rot_x(math.pi / 2)
+_ALONG_Y = Placer(rot_x(math.pi / 2))
 
 
 def _box(lo, hi, role):
@@ -126,5 +126,5 @@ def folding_rear_legs(p, foot, y: float, tube_radius: float) -> Part:
     R = rot_y(math.atan2(u[0], u[1]))
     r = tube_radius
     prims = [cuboid(2 * r, 2 * r, L, translation(u[0] / 2, s * y, u[1] / 2) @ R, role="leg") for s in (-1, 1)]
-    prims.append(cylinder(0.9 * r, 2 * y, translation(gc * u[0], 0, gc * u[1]) @ _ALONG_Y, role="crossbar"))
+    prims.append(cylinder(0.9 * r, 2 * y, _ALONG_Y.at(gc * u[0], 0, gc * u[1]), role="crossbar"))
     return Part("leg", "folding_rear_legs", prims, anchors={"crossbar": (gc * L, 0.9 * r, 0.0)})

@@ -33,10 +33,11 @@ import math
 import numpy as np
 
 from artipg.geometry import Cuboid, cuboid, frustum, prism, rect_ring, ring
-from artipg.geometry.transforms import rot_y, rot_z, translation
+from artipg.geometry.transforms import Placer, rot_y, rot_z, translation
 from artipg.model.part import Grasp, Part, Region
 
 _ALONG_X = rot_y(math.pi / 2)    # local z -> +x (frustum r_bottom at the front, -x)
+_ALONG_X_PLACER = Placer(_ALONG_X)  # translation(x, y, z) @ _ALONG_X as _ALONG_X_PLACER.at(x, y, z)
 _ALONG_MX = rot_y(-math.pi / 2)  # local z -> -x (frustum r_bottom at the back, +x)
 # gripper frames approaching +x (towards the surface); jaws closing along y or along z
 _JAW_Y = np.array([[0.0, 0.0, 1.0, 0.0], [0.0, 1.0, 0.0, 0.0], [-1.0, 0.0, 0.0, 0.0], [0.0, 0.0, 0.0, 1.0]])
@@ -93,7 +94,7 @@ def fluted_knob(p, radius: float | None = None) -> Part:
     collar = p.uniform("collar_depth", 0.003, 0.006)
     d = p.uniform("grip_depth", 0.012, 0.022)
     prims = [_x_disc(R, 0.9 * R, 0.0, -collar, "collar"),
-             prism(0.9 * R, d, n, translation(-collar - d / 2, 0, 0) @ _ALONG_X, role="grip")]
+             prism(0.9 * R, d, n, _ALONG_X_PLACER.at(-collar - d / 2, 0, 0), role="grip")]
     return _knob_part("fluted_knob", prims, -collar - d / 2, 1.8 * R, 1.8 * R, collar + d)
 
 

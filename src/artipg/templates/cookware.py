@@ -18,7 +18,7 @@ import math
 import numpy as np
 
 from artipg.geometry import cuboid, cuboid_between, cylinder, rect_ring, torus, tube
-from artipg.geometry.transforms import rot_x, rot_y, translation
+from artipg.geometry.transforms import Placer, rot_x, rot_y, translation
 from artipg.geometry.tube import arc, line
 from artipg.model.part import Grasp, Part, Region
 from artipg.templates.extents import span
@@ -28,7 +28,7 @@ from artipg.templates.levers import top_grasp
 
 _EMBED = 0.0015  # how deep a handle's root sinks into the wall
 # handles.py frame (protrude -x, long axis +z) -> outward +x, long axis along y
-_SIDEWAYS = np.array([[-1.0, 0.0, 0.0, 0.0], [0.0, 0.0, 1.0, 0.0], [0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 0.0, 1.0]])
+_SIDEWAYS = Placer(np.array([[-1.0, 0.0, 0.0, 0.0], [0.0, 0.0, 1.0, 0.0], [0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 0.0, 1.0]]))
 _LIFT = np.array([0.0, 0.0, 1.0])  # fixed handles lift the vessel
 _LIFT.flags.writeable = False
 _ALONG_X = rot_y(math.pi / 2)  # local z -> +x
@@ -159,7 +159,7 @@ def arch_lug(p, radius: float) -> Part:
     """Bent-wire D handle lying sideways (a front-handle template turned 90 deg)."""
     L = p.uniform("span", 0.04, 0.065)
     part = arch_handle(p, length=L)
-    T = translation(-_sag(radius, L / 2) - _EMBED, 0, 0) @ _SIDEWAYS
+    T = _SIDEWAYS.at(-_sag(radius, L / 2) - _EMBED, 0, 0)
     part.primitives = [pr.placed(T) for pr in part.primitives]
     part.grasps = [Grasp(T @ g.pose, g.width, _LIFT) for g in part.grasps]
     part.template = "arch_lug"

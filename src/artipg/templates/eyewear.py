@@ -21,18 +21,19 @@ import numpy as np
 
 from artipg.geometry import cuboid, cuboid_between, cylinder, rect_ring, ring, torus, tube
 from artipg.geometry.tube import arc, line
-from artipg.geometry.transforms import rot_y, translation
+from artipg.geometry.transforms import Placer, rot_y, translation
 from artipg.model.part import Part, Region
 
-_AX = rot_y(math.pi / 2)  # local z -> object x (a disc or ring facing -x)
+_AX = Placer(rot_y(math.pi / 2))  # local z -> object x (a disc or ring facing -x)
 # ring / torus arcs swept from +y over +z to -y (local x -> y, y -> z, z -> x)
-_ARC_YZ = np.array([[0.0, 0.0, 1.0, 0.0], [1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 0.0, 1.0]])
+_ARC_YZ = Placer(np.array([[0.0, 0.0, 1.0, 0.0], [1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 0.0, 1.0]]))
 
 
 def lens(p, shape: str, width: float, height: float, thickness: float | None = None) -> Part:
     """A lens centred on its origin, facing -x: a disc (``shape="round"``) or a slab."""
     t = p.uniform("thickness", 0.0015, 0.0025, fixed=thickness)
-    prim = cylinder(width / 2, t, _AX, role="lens") if shape == "round" else cuboid(t, width, height, role="lens")
+    prim = (cylinder(width / 2, t, _AX.matrix, role="lens") if shape == "round"
+            else cuboid(t, width, height, role="lens"))
     return Part("lens", f"{shape}_lens", [prim])
 
 
@@ -63,7 +64,7 @@ def _front(p, template, width, height, bridge, depth, rim, rims, edge, temple, k
     yb = yc - edge(zb) + 0.0005
     bh = p.uniform("bridge_height", 0.0018, 0.004)
     if template == "full_rim_front" and edge(b) < 0.5 * a and p.flag("arched_bridge", 0.5):
-        prims.append(torus(yb, bh / 2, math.pi, translation(-depth / 2, 0, zb) @ _ARC_YZ, role="bridge"))
+        prims.append(torus(yb, bh / 2, math.pi, _ARC_YZ.at(-depth / 2, 0, zb), role="bridge"))
     else:
         bd = max(0.6 * depth, 0.0016)
         prims.append(cuboid_between((-(depth + bd) / 2, -yb, zb - bh / 2), ((bd - depth) / 2, yb, zb + bh / 2),
@@ -79,7 +80,7 @@ def _front(p, template, width, height, bridge, depth, rim, rims, edge, temple, k
         for s in (1.0, -1.0):
             prims.append(cuboid_between((-depth / 2, s * yp - 0.0008, zp - 0.0008), (xp, s * yp + 0.0008, zp + 0.0008),
                                         role="pad"))
-            prims.append(cylinder(rp, 0.0016, translation(xp + 0.0008, s * (yp + rp * 0.6), zp) @ _AX, role="pad"))
+            prims.append(cylinder(rp, 0.0016, _AX.at(xp + 0.0008, s * (yp + rp * 0.6), zp), role="pad"))
         fold = xp + 0.0016 + gap
     else:
         fold = gap + p.uniform("fold_gap", 0.0, 0.003)
@@ -101,13 +102,13 @@ def full_rim_front(p, shape, width, height, bridge, temple, knuckle_r, gap) -> P
     rim = p.uniform("rim", 0.0015, 0.005)
     if shape == "round":
         def rims(yc):
-            return [ring(width / 2 + rim, width / 2, d, pose=translation(-d / 2, s * yc, 0) @ _AX, role="rim")
+            return [ring(width / 2 + rim, width / 2, d, pose=_AX.at(-d / 2, s * yc, 0), role="rim")
                     for s in (1, -1)]
         edge = _round_edge(width / 2 + rim / 2)
     else:
         def rims(yc):
             return [rect_ring(height + 2 * rim, width + 2 * rim, d, height, width,
-                              translation(-d / 2, s * yc, 0) @ _AX, role="rim") for s in (1, -1)]
+                              _AX.at(-d / 2, s * yc, 0), role="rim") for s in (1, -1)]
         edge = lambda z: width / 2 + rim / 2  # noqa: E731
     return _front(p, "full_rim_front", width, height, bridge, d, rim, rims, edge, temple, knuckle_r, gap)
 
@@ -118,7 +119,7 @@ def half_rim_front(p, shape, width, height, bridge, temple, knuckle_r, gap) -> P
     rim = p.uniform("rim", 0.002, 0.005)
     if shape == "round":
         def rims(yc):
-            return [ring(width / 2 + rim, width / 2, d, math.pi, translation(-d / 2, s * yc, 0) @ _ARC_YZ, role="rim")
+            return [ring(width / 2 + rim, width / 2, d, math.pi, _ARC_YZ.at(-d / 2, s * yc, 0), role="rim")
                     for s in (1, -1)]
         return _front(p, "half_rim_front", width, height, bridge, d, rim, rims, _round_edge(width / 2 + rim / 2),
                       temple, knuckle_r, gap)

@@ -19,10 +19,10 @@ import math
 import numpy as np
 
 from artipg.geometry import cuboid, cuboid_between, cylinder, prism, rect_ring
-from artipg.geometry.transforms import rot_y, translation
+from artipg.geometry.transforms import Placer, rot_y, translation
 from artipg.model.part import Part, Region
 
-_RING_TO_X = rot_y(np.pi / 2)  # rect ring's thickness axis (z) -> x
+_RING_TO_X = Placer(rot_y(np.pi / 2))  # rect ring's thickness axis (z) -> x
 
 
 def swing_clearance(thickness: float, span: float, margin: float = 0.002) -> float:
@@ -76,7 +76,7 @@ def window_frame(p, width: float, height: float, depth: float | None = None, sil
     d = p.uniform("depth", 0.06, 0.12, fixed=depth)
     fw = p.uniform("frame_width", 0.035, 0.07)
     ring = rect_ring(height + 2 * fw, width + 2 * fw, d, height, width,
-                     translation(d / 2, 0, height / 2) @ _RING_TO_X, role="frame")
+                     _RING_TO_X.at(d / 2, 0, height / 2), role="frame")
     prims = [ring]
     if p.flag("sill", 0.5, fixed=sill):
         over = p.uniform("sill_overhang", 0.02, 0.06)
@@ -91,7 +91,7 @@ def stop_ring(width: float, height: float, x0: float, depth: float, band: float,
     centred at ``centre`` (y, z), spanning ``x in [x0, x0 + depth]``."""
     cy, cz = centre
     return Part("frame", "stop_ring", [rect_ring(height, width, depth, height - 2 * band, width - 2 * band,
-                                                 translation(x0 + depth / 2, cy, cz) @ _RING_TO_X, role="stop")])
+                                                 _RING_TO_X.at(x0 + depth / 2, cy, cz), role="stop")])
 
 
 def panel_leaf(p, width: float, height: float, thickness: float | None = None, semantic: str = "door") -> Part:
@@ -105,7 +105,7 @@ def panel_leaf(p, width: float, height: float, thickness: float | None = None, s
     ph = (height - 2 * rail - (rows - 1) * mid) / rows
     inset = p.uniform("panel_inset", 0.25, 0.4) * t
     prims = [rect_ring(height, width, t, height - 2 * rail, width - 2 * rail,
-                       translation(-t / 2, 0, 0) @ _RING_TO_X, role="panel"),
+                       _RING_TO_X.at(-t / 2, 0, 0), role="panel"),
              cuboid(t - 2 * inset, width - 2 * rail, height - 2 * rail, translation(-t / 2, 0, 0), role="inset")]
     for i in range(1, rows):
         z = -height / 2 + rail + i * ph + (i - 0.5) * mid
@@ -135,7 +135,7 @@ def glazed_panel(p, width: float, height: float, thickness: float | None = None,
     nc = p.integers("lite_cols", 1, max(1, min(3, int(width / 0.3))), fixed=cols)
     bar = p.uniform("bar_width", 0.015, 0.03)
     gw, gh = width - 2 * r, height - 2 * r
-    prims = [rect_ring(height, width, t, gh, gw, translation(-t / 2, 0, 0) @ _RING_TO_X, role="panel")]
+    prims = [rect_ring(height, width, t, gh, gw, _RING_TO_X.at(-t / 2, 0, 0), role="panel")]
     bt = 0.6 * t
     for i in range(1, nr):  # glazing bars on the lites' edges
         prims.append(cuboid(bt, gw, bar, translation(-t / 2, 0, -gh / 2 + i * (gh + bar) / nr - bar / 2), role="bar"))
@@ -180,14 +180,14 @@ def barn_hardware(p, width: float, thickness: float, span: tuple[float, float], 
              cuboid_between((xr - rt / 2, y0, zr - rh), (xr + rt / 2, y1, zr), role="rail")]
     for k in range(4):
         y = y0 + 0.04 + k * (y1 - y0 - 0.08) / 3
-        prims.append(cylinder(0.008, gap - xr, translation((xr + gap) / 2, y, zr - rh / 2) @ _RING_TO_X,
+        prims.append(cylinder(0.008, gap - xr, _RING_TO_X.at((xr + gap) / 2, y, zr - rh / 2),
                               role="spacer"))
     track = Part("frame", "barn_track", prims, anchors={"wall": (gap + hdr, 0.0, 0.0)})
     hw, zc = [], zr + R * math.cos(math.pi / 16)  # roller centre: a 16-gon standing on a flat
     for y in (-0.32 * width, 0.32 * width):  # strap on the leaf face, axle, roller on the rail
         hw += [cuboid_between((-t - st, y - 0.02, -0.12), (-t, y + 0.02, zc + 0.02), role="strap"),
-               cylinder(0.006, e + 0.002, translation(-t + e / 2, y, zc) @ _RING_TO_X, role="axle"),
-               prism(R, wt, 16, translation(xr, y, zc) @ _RING_TO_X, role="wheel")]
+               cylinder(0.006, e + 0.002, _RING_TO_X.at(-t + e / 2, y, zc), role="axle"),
+               prism(R, wt, 16, _RING_TO_X.at(xr, y, zc), role="wheel")]
     return track, Part("hinge", "barn_hanger", hw)
 
 

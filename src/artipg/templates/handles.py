@@ -16,10 +16,10 @@ import numpy as np
 
 from artipg.geometry import cuboid, cylinder, sphere, tube
 from artipg.geometry.tube import arc, line
-from artipg.geometry.transforms import rot_y, translation
+from artipg.geometry.transforms import Placer, rot_y, translation
 from artipg.model.part import Grasp, Part, Region
 
-_X_AXIS = rot_y(math.pi / 2)  # local z -> object x
+_X_AXIS = Placer(rot_y(math.pi / 2))  # local z -> object x
 
 
 # gripper axes in the part frame: approach +z_g = +x (towards the surface), jaws close
@@ -50,7 +50,7 @@ def bar_handle(p, length: float | None = None) -> Part:
     x_bar = -standoff
     prims = [cylinder(r, L, translation(x_bar, 0, 0), role="grip")]
     for s in (-1.0, 1.0):
-        T = translation(x_bar / 2 + r / 2, 0, s * (L / 2 - inset - post_r)) @ _X_AXIS  # spans x in [x_bar + r, 0]
+        T = _X_AXIS.at(x_bar / 2 + r / 2, 0, s * (L / 2 - inset - post_r))  # spans x in [x_bar + r, 0]
         prims.append(cylinder(post_r, standoff - r, T, role="post"))
     return Part("handle", "bar_handle", prims, regions={"grasp": Region(("grip",)), "pull": Region(("grip",))},
                 grasps=_grasps_along_z(x_bar, -L / 3, L / 3, 4 * r + 0.02), actionable="line_fixed_handle")
@@ -90,8 +90,8 @@ def knob_pull(p, length: float | None = None) -> Part:
     stem_r = p.uniform("stem_radius", 0.35, 0.6) * R
     stem = p.uniform("stem_length", 0.012, 0.025)
     head = p.uniform("head_height", 0.3, 0.8) * R
-    prims = [cylinder(stem_r, stem, translation(-stem / 2, 0, 0) @ _X_AXIS, role="stem"),
-             cylinder(R, head, translation(-stem - head / 2, 0, 0) @ _X_AXIS, role="grip")]
+    prims = [cylinder(stem_r, stem, _X_AXIS.at(-stem / 2, 0, 0), role="stem"),
+             cylinder(R, head, _X_AXIS.at(-stem - head / 2, 0, 0), role="grip")]
     return Part("handle", "knob_pull", prims, regions={"grasp": Region(("grip",)), "pull": Region(("grip",))},
                 grasps=[front_grasp(-stem - head / 2, 0.0, 0.0, 2 * R + 0.02)], actionable="round_fixed_handle")
 
@@ -101,7 +101,7 @@ def ball_knob_pull(p, length: float | None = None) -> Part:
     R = p.uniform("ball_radius", 0.01, 0.02)
     stem = p.uniform("stem_length", 0.01, 0.02)
     stem_r = 0.45 * R
-    prims = [cylinder(stem_r, stem + 0.2 * R, translation(-(stem + 0.2 * R) / 2, 0, 0) @ _X_AXIS, role="stem"),
+    prims = [cylinder(stem_r, stem + 0.2 * R, _X_AXIS.at(-(stem + 0.2 * R) / 2, 0, 0), role="stem"),
              sphere(R, pose=translation(-stem - R, 0, 0), role="grip")]
     return Part("handle", "ball_knob_pull", prims, regions={"grasp": Region(("grip",)), "pull": Region(("grip",))},
                 grasps=[front_grasp(-stem - R, 0.0, 0.0, 2 * R + 0.02)], actionable="round_fixed_handle")

@@ -19,10 +19,10 @@ import math
 import numpy as np
 
 from artipg.geometry import cuboid, cuboid_between, cylinder, rect_ring
-from artipg.geometry.transforms import rot_x, translation
+from artipg.geometry.transforms import Placer, rot_x, translation
 from artipg.model.part import Part, Region
 
-_Y = rot_x(math.pi / 2)  # local z -> y
+_Y = Placer(rot_x(math.pi / 2))  # local z -> y
 
 
 def _skin(D: float, W: float, holes, z0: float, z1: float) -> list:
@@ -65,9 +65,9 @@ def laptop_base(p, width: float, depth: float, thickness: float, holes=()) -> Pa
     hinge_len = p.uniform("hinge_length", 0.15, 0.35) if p.flag("two_hinges", 0.5) else 0.0
     if hinge_len:  # two short barrels near the corners
         L = hinge_len * W
-        prims += [cylinder(rb, L, translation(ax, s * (W - 0.02 - L / 2), az) @ _Y, role="hinge") for s in (-1, 1)]
+        prims += [cylinder(rb, L, _Y.at(ax, s * (W - 0.02 - L / 2), az), role="hinge") for s in (-1, 1)]
     else:
-        prims.append(cylinder(rb, width - 0.04, translation(ax, 0, az) @ _Y, role="hinge"))
+        prims.append(cylinder(rb, width - 0.04, _Y.at(ax, 0, az), role="hinge"))
     return Part("base", "laptop_base", prims, anchors={"deck": (0.0, 0.0, h), "hinge": (ax, 0.0, az),
                                                        "barrel": (rb, 0.0, 0.0), "skin": (sk, 0.0, 0.0)},
                 regions={"lift": Region(("body",))})

@@ -25,14 +25,14 @@ import math
 import numpy as np
 
 from artipg.geometry import cuboid, cylinder, frustum, prism, sphere, tube
-from artipg.geometry.transforms import rot_y, rot_z, rotation, translation
+from artipg.geometry.transforms import Placer, rot_y, rot_z, rotation, translation
 from artipg.geometry.tube import arc, line
 from artipg.model.part import Grasp, Part, Region
 
 CLEARANCE = 0.006
-_ALONG_Y = rotation((1.0, 0.0, 0.0), -math.pi / 2)  # local z -> +y
-_ALONG_X = rot_y(math.pi / 2)                      # local z -> +x
-_ALONG_MINUS_X = rot_y(-math.pi / 2)               # local z -> -x
+_ALONG_Y = Placer(rotation((1.0, 0.0, 0.0), -math.pi / 2))  # local z -> +y
+_ALONG_X = rot_y(math.pi / 2)                              # local z -> +x
+_ALONG_MINUS_X = Placer(rot_y(-math.pi / 2))              # local z -> -x
 _QUARTER_TURN = rot_z(math.pi / 2)
 # gripper approaching -z (from above), jaws closing along x / along y
 _TOP_JAW_X = np.array([[0.0, 1.0, 0.0, 0.0], [1.0, 0.0, 0.0, 0.0], [0.0, 0.0, -1.0, 0.0], [0.0, 0.0, 0.0, 1.0]])
@@ -71,12 +71,12 @@ def _bail(p, template, span, clear, rc_frac, sleeve):
     rp = p.uniform("pin_radius", 1.2, 1.8) * r
     lp = p.uniform("pin_length", 0.002, 0.004)
     for s in (-1.0, 1.0):
-        prims.append(cylinder(rp, lp + 2 * r, translation(0, s * (span - lp / 2), 0) @ _ALONG_Y, role="pin"))
+        prims.append(cylinder(rp, lp + 2 * r, _ALONG_Y.at(0, s * (span - lp / 2), 0), role="pin"))
     top = h + rc
     grip = ("wire",)
     if sleeve:
         L = min(2 * (span - rc), p.uniform("sleeve_length", 0.08, 0.13))
-        prims.append(cylinder(rg, L, translation(0, 0, top) @ _ALONG_Y, role="grip"))
+        prims.append(cylinder(rg, L, _ALONG_Y.at(0, 0, top), role="grip"))
         grip = ("grip",)
     return Part("handle", template, prims,
                 anchors={"pivot_+y": (0.0, span, 0.0), "pivot_-y": (0.0, -span, 0.0), "apex": (0.0, 0.0, top),
@@ -110,7 +110,7 @@ def ear_lugs(p, wall_y: float, end_y: float, radius: float | None = None) -> Par
     pivot pins (at +-``end_y``, the bail's ``pin_+y`` anchor); origin at the pivot midpoint."""
     rl = p.uniform("lug_radius", 0.006, 0.012, fixed=radius)
     y0, y1 = wall_y - 0.0015, end_y
-    prims = [cylinder(rl, y1 - y0, translation(0, s * (y0 + y1) / 2, 0) @ _ALONG_Y, role="lug") for s in (-1, 1)]
+    prims = [cylinder(rl, y1 - y0, _ALONG_Y.at(0, s * (y0 + y1) / 2, 0), role="lug") for s in (-1, 1)]
     return Part("body", "ear_lugs", prims, anchors={"pin_+y": (0.0, end_y, 0.0), "pin_-y": (0.0, -end_y, 0.0)})
 
 
@@ -201,7 +201,7 @@ def side_lever(p, radius: float | None = None) -> Part:
     hl = p.uniform("hub_length", 0.01, 0.02)
     L = p.uniform("arm_length", 0.035, 0.07)
     ra = min(p.uniform("arm_radius", 0.35, 0.6) * rh, 0.45 * hl)
-    prims = [frustum(rh, 0.9 * rh, hl, translation(-hl / 2, 0, 0) @ _ALONG_MINUS_X, role="hub"),
+    prims = [frustum(rh, 0.9 * rh, hl, _ALONG_MINUS_X.at(-hl / 2, 0, 0), role="hub"),
              cylinder(ra, L, translation(-hl + ra, 0, L / 2), role="grip"),
              sphere(1.3 * ra, pose=translation(-hl + ra, 0, L), role="grip")]
     g = Grasp(np.array([[0.0, 0.0, 1.0, -hl + ra], [0.0, 1.0, 0.0, 0.0], [-1.0, 0.0, 0.0, 0.8 * L],

@@ -16,14 +16,14 @@ import math
 import numpy as np
 
 from artipg.geometry import Ring, cuboid_between, cylinder, ring, tri_prism
-from artipg.geometry.transforms import rot_x, rot_z, translation
+from artipg.geometry.transforms import Placer, rot_x, rot_z, translation
 from artipg.model.part import Part, Region
 from artipg.templates.extents import span
 from artipg.templates.levers import top_grasp
 
-_Y = rot_x(math.pi / 2)  # local z -> object -y (cylinders and rings along y)
+_Y = Placer(rot_x(math.pi / 2))  # local z -> object -y (cylinders and rings along y)
 # arcs swept about x: local x -> y, local y -> z, local z -> x
-_ALONG_X = np.array([[0.0, 0.0, 1.0, 0.0], [1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 0.0, 1.0]])
+_ALONG_X = Placer(np.array([[0.0, 0.0, 1.0, 0.0], [1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 0.0, 1.0]]))
 
 
 def flat_base(p, length: float, width: float, top: float) -> Part:
@@ -36,7 +36,7 @@ def rounded_base(p, length: float, width: float, top: float) -> Part:
     """A base plate with a rounded nose."""
     r = top / 2
     prims = [cuboid_between((-length / 2 + r, -width / 2, 0.0), (length / 2, width / 2, top), role="plate"),
-             cylinder(r, width, translation(-length / 2 + r, 0, r) @ _Y, role="plate")]
+             cylinder(r, width, _Y.at(-length / 2 + r, 0, r), role="plate")]
     return Part("base", "rounded_base", prims, regions={"push": Region(("plate",))})
 
 
@@ -54,7 +54,7 @@ BASES = {flat_base: 2.0, rounded_base: 2.0, footed_base: 1.0}
 
 
 def _knuckle_axle(radius, width, axle_r, span):
-    return [cylinder(radius, width, _Y, role="knuckle"), cylinder(axle_r, 2 * span, _Y, role="axle")]
+    return [cylinder(radius, width, _Y.matrix, role="knuckle"), cylinder(axle_r, 2 * span, _Y.matrix, role="axle")]
 
 
 def channel_magazine(p, length: float, width: float, radius: float, axle_r: float, span: float) -> Part:
@@ -88,7 +88,7 @@ def _arm(name, top, p, length, width, radius, clear, skirt, axle_r, nose_gap):
     for s in (1.0, -1.0):
         prims.append(cuboid_between((x0, min(s * y0, s * y1), -hs), (-axle_r - 0.0012, max(s * y0, s * y1), z1),
                                     role="skirt"))
-        prims.append(ring(axle_r + 0.0026, axle_r + 0.0004, y1 - y0, pose=translation(0, s * (y0 + y1) / 2, 0) @ _Y,
+        prims.append(ring(axle_r + 0.0026, axle_r + 0.0004, y1 - y0, pose=_Y.at(0, s * (y0 + y1) / 2, 0),
                           role="skirt"))
     prims.append(cuboid_between((x0, -y1, -radius + 0.001), (x0 + t, y1, z1), role="nose"))
     # from above near the nose, jaws closing across the arm's width outside the skirts
@@ -110,7 +110,7 @@ def rounded_arm(p, length, width, radius, clear, skirt, axle_r, nose_gap) -> Par
 
     def top(x0, y1, z0, t):
         R = y1 / math.sin(half)
-        T = translation(x0 / 2, 0, z0 + t - (R - t) * math.cos(half)) @ _ALONG_X @ rot_z(math.pi / 2 - half)
+        T = _ALONG_X.at(x0 / 2, 0, z0 + t - (R - t) * math.cos(half)) @ rot_z(math.pi / 2 - half)
         cap = (R - t) * math.cos(half) - 0.0005
         return [cuboid_between((x0, -y1, z0), (0.0, y1, z0 + t), role="cover"),
                 ring(R, R - t, -x0, 2 * half, T, role="cover"),
@@ -125,7 +125,7 @@ def humped_arm(p, length, width, radius, clear, skirt, axle_r, nose_gap) -> Part
 
     def top(x0, y1, z0, t):
         wedge = tri_prism(hl, hh, hl * p.uniform("hump_peak", 0.1, 0.4), 2 * y1,
-                          translation(-hl / 2 - 0.002, 0, z0 + t) @ _Y, role="cover")
+                          _Y.at(-hl / 2 - 0.002, 0, z0 + t), role="cover")
         return [cuboid_between((x0, -y1, z0), (0.0, y1, z0 + t), role="cover"), wedge]
     return _arm("humped_arm", top, p, length, width, radius, clear, skirt, axle_r, nose_gap)
 

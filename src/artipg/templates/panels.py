@@ -12,10 +12,10 @@ from __future__ import annotations
 import numpy as np
 
 from artipg.geometry import cuboid, cuboid_between, rect_ring
-from artipg.geometry.transforms import rot_y, translation
+from artipg.geometry.transforms import Placer, rot_y, translation
 from artipg.model.part import Grasp, Part, Region
 
-_FRAME_TO_X = rot_y(np.pi / 2)  # rect ring's z (thickness) -> x
+_FRAME_TO_X = Placer(rot_y(np.pi / 2))  # rect ring's z (thickness) -> x
 
 
 def _front_anchors(t: float, w: float, h: float) -> dict:
@@ -86,7 +86,7 @@ def framed_door(p, width: float, height: float, thickness: float | None = None) 
     rail = min(rail, 0.3 * min(width, height))
     panel_t = p.uniform("panel_thickness", 0.3, 0.6) * t
     frame = rect_ring(height, width, t, height - 2 * rail, width - 2 * rail,
-                      translation(-t / 2, 0, 0) @ _FRAME_TO_X, role="panel")
+                      _FRAME_TO_X.at(-t / 2, 0, 0), role="panel")
     inner = cuboid(panel_t, width - 2 * rail, height - 2 * rail, translation(-panel_t / 2, 0, 0), role="inset")
     return Part("door", "framed_door", [frame, inner], anchors=_front_anchors(t, width, height),
                 regions=_front_regions(t, width, height), grasps=door_edge_grasps(t, width, height),
@@ -99,7 +99,7 @@ def glass_door(p, width: float, height: float, thickness: float | None = None) -
     rail = min(p.uniform("rail_width", 0.03, 0.07), 0.3 * min(width, height))
     glass_t = p.uniform("glass_thickness", 0.004, 0.006)
     frame = rect_ring(height, width, t, height - 2 * rail, width - 2 * rail,
-                      translation(-t / 2, 0, 0) @ _FRAME_TO_X, role="panel")
+                      _FRAME_TO_X.at(-t / 2, 0, 0), role="panel")
     pane = cuboid(glass_t, width - 2 * rail, height - 2 * rail, translation(-t / 2, 0, 0), role="glass")
     return Part("door", "glass_door", [frame, pane], anchors=_front_anchors(t, width, height),
                 regions=_front_regions(t, width, height), grasps=door_edge_grasps(t, width, height),

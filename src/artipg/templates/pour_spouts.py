@@ -19,13 +19,13 @@ import math
 import numpy as np
 
 from artipg.geometry import cuboid, cylinder, ring, tube
-from artipg.geometry.transforms import rot_y, translation
+from artipg.geometry.transforms import Placer, rot_y, translation
 from artipg.geometry.tube import arc, line
 from artipg.model.part import Grasp, Part, Region
 
 _EMBED = 0.0008  # the spout's inner face sits this deep in the wall (walls are >= 1.5 mm)
 _WALL = 0.0015  # sheet thickness of the hollow straight spouts (a solid one would outweigh the kettle)
-_ALONG_X = rot_y(math.pi / 2)  # local z -> +x
+_ALONG_X = Placer(rot_y(math.pi / 2))  # local z -> +x
 
 
 def _spout(name, prims, tip, heading, r) -> Part:
@@ -37,7 +37,7 @@ def _spout(name, prims, tip, heading, r) -> Part:
 def _neck(r, length):
     """Short horizontal tube from inside the wall (its inner end sits within the wall's
     thickness) out to x = ``length``, which the spout leaves from."""
-    return ring(r, r - _WALL, length + _EMBED, pose=translation((length - _EMBED) / 2, 0, 0) @ _ALONG_X,
+    return ring(r, r - _WALL, length + _EMBED, pose=_ALONG_X.at((length - _EMBED) / 2, 0, 0),
                 role="spout")
 
 
@@ -102,7 +102,7 @@ def whistle_cap(p, tip_radius: float) -> Part:
     rc = tip_radius + p.uniform("wall", 0.0015, 0.003)
     L = p.uniform("length", 0.01, 0.018)
     tab = p.uniform("tab", 0.006, 0.012)
-    prims = [cylinder(rc, L, translation(0.0005 + L / 2, 0, -rc) @ _ALONG_X, role="cap"),
+    prims = [cylinder(rc, L, _ALONG_X.at(0.0005 + L / 2, 0, -rc), role="cap"),
              cuboid(tab, 0.5 * rc, 0.002, translation(0.0005 + L / 2, 0, 0.0008), role="tab")]
     return Part("cap", "whistle_cap", prims, anchors={"radius": (rc, 0.0, 0.0)},
                 regions={"push": Region(("tab",)), "lift": Region(("tab", "cap"))},

@@ -15,12 +15,12 @@ from __future__ import annotations
 import math
 
 from artipg.geometry import cuboid, cuboid_between, cylinder, rect_ring
-from artipg.geometry.transforms import rot_x, rot_y, rot_z, translation
+from artipg.geometry.transforms import Placer, rot_x, rot_y, rot_z, translation
 from artipg.model.part import Part, Region
 
 
-_YZ = rot_y(math.pi / 2)  # rect ring in the y-z plane: local x -> -z (height), y -> y
-_XZ = rot_x(math.pi / 2)  # rect ring in the x-z plane: local x -> x, local y -> z
+_YZ = Placer(rot_y(math.pi / 2))  # rect ring in the y-z plane: local x -> -z (height), y -> y
+_XZ = Placer(rot_x(math.pi / 2))  # rect ring in the x-z plane: local x -> x, local y -> z
 _ARM_TURNS = (rot_z(0.0), rot_z(math.pi / 2))  # a spray arm's first and second bar
 
 
@@ -53,10 +53,10 @@ def wire_rack(p, depth: float, width: float, height: float, tines: bool | None =
     prims = [_wire_box(-D, D, -W, W, 0.0, 2 * r, 2 * r, "frame")]
     for sx in (-1, 1):  # front and back walls (loops in the y-z plane), then the sides (x-z plane)
         prims.append(rect_ring(height, width, 2 * r, height - 4 * r, width - 4 * r,
-                               translation(sx * (D - r), 0, height / 2) @ _YZ, role="rim"))
+                               _YZ.at(sx * (D - r), 0, height / 2), role="rim"))
     for sy in (-1, 1):
         prims.append(rect_ring(depth, height, 2 * r, depth - 4 * r, height - 4 * r,
-                               translation(0, sy * (W - r), height / 2) @ _XZ, role="rim"))
+                               _XZ.at(0, sy * (W - r), height / 2), role="rim"))
     for i in range(n):
         y = -W + width * (i + 1) / (n + 1)
         prims.append(cuboid(depth - 2 * r, 2 * r, 2 * r, translation(0, y, r), role="wire"))

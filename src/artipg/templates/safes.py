@@ -17,10 +17,10 @@ from __future__ import annotations
 import numpy as np
 
 from artipg.geometry import cuboid, cuboid_between, cylinder, rect_ring
-from artipg.geometry.transforms import rot_y, translation
+from artipg.geometry.transforms import Placer, rot_y, translation
 from artipg.model.part import Part, Region
 
-_RING_TO_X = rot_y(np.pi / 2)
+_RING_TO_X = Placer(rot_y(np.pi / 2))
 
 
 def safe_door(p, width: float, height: float, wall: float, hinge: float, knuckles: bool | None = None) -> Part:
@@ -57,7 +57,7 @@ def keypad_housing(p, field_w: float, field_h: float, depth: float, gap: float):
     d = depth
     iw, ih = field_w + 2 * gap, field_h + 2 * gap
     frame = Part("panel", "keypad_housing", [rect_ring(ih + 2 * band, iw + 2 * band, d, ih, iw,
-                                                       translation(-d / 2, 0, 0) @ _RING_TO_X, role="frame")],
+                                                       _RING_TO_X.at(-d / 2, 0, 0), role="frame")],
                  anchors={"corner": (-d, iw / 2 + band, ih / 2 + band)})
     dh = p.uniform("display_height", 0.015, 0.03)
     dd = p.uniform("display_depth", 0.004, 0.01)

@@ -25,11 +25,12 @@ import math
 import numpy as np
 
 from artipg.geometry import Primitive, cuboid, cuboid_between, cylinder, frustum, rect_ring
-from artipg.geometry.transforms import rot_x, rot_y, rot_z, translation
+from artipg.geometry.transforms import Placer, rot_x, rot_y, rot_z, translation
 from artipg.model.part import Part, Region
 
-_Y_AXIS = rot_x(math.pi / 2)  # local z -> -y: cylinders lying along y
+_Y_AXIS = Placer(rot_x(math.pi / 2))  # local z -> -y: cylinders lying along y
 _X_AXIS = rot_y(math.pi / 2)
+_X_AXIS_PLACER = Placer(_X_AXIS)  # translation(x, y, z) @ _X_AXIS as _X_AXIS_PLACER.at(x, y, z)
 
 
 def _turn_table(n: int) -> np.ndarray:
@@ -75,7 +76,7 @@ def waterfall_seat(p, depth: float, width: float, thickness: float | None = None
     t = p.uniform("thickness", 0.04, 0.09, fixed=thickness)
     r = t / 2
     return _seat("waterfall_seat", [cuboid(depth - r, width, t, translation(r / 2, 0, t / 2), role="cushion"),
-                                    cylinder(r, width, translation(-depth / 2 + r, 0, r) @ _Y_AXIS, role="cushion")],
+                                    cylinder(r, width, _Y_AXIS.at(-depth / 2 + r, 0, r), role="cushion")],
                  t)
 
 
@@ -124,7 +125,7 @@ def frame_back(p, width: float, height: float, z0: float, lean: float = 0.0, spi
     t = p.uniform("thickness", 0.015, 0.03)
     rail = p.uniform("rail", 0.02, 0.05)
     prims, x = _carrier(p, width, z0, spine, t)
-    c = translation(x + t / 2, 0.0, z0 + height / 2) @ _X_AXIS
+    c = _X_AXIS_PLACER.at(x + t / 2, 0.0, z0 + height / 2)
     prims += [rect_ring(height, width, t, height - 2 * rail, width - 2 * rail, c, role="board"),
               cuboid(0.004, width - 2 * rail, height - 2 * rail, translation(x + t / 2, 0.0, z0 + height / 2),
                      role="board")]
@@ -236,5 +237,5 @@ def paddle_lever(p, length: float | None = None) -> Part:
 
 def wheel(p, radius: float, width: float) -> Part:
     """Wheel (tyre) of ``radius`` and ``width`` about local y."""
-    return Part("wheel", "wheel", [cylinder(radius, width, _Y_AXIS, role="tyre")],
+    return Part("wheel", "wheel", [cylinder(radius, width, _Y_AXIS.matrix, role="tyre")],
                 regions={"rotate": Region(("tyre",))})

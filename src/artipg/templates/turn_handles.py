@@ -19,16 +19,16 @@ import numpy as np
 
 from artipg.geometry import cuboid, cylinder, frustum, sphere, tube
 from artipg.geometry.tube import arc, line
-from artipg.geometry.transforms import rot_x, rot_y, translation
+from artipg.geometry.transforms import Placer, rot_x, rot_y, translation
 from artipg.model.part import Grasp, Part, Region
 
-_X = rot_y(-math.pi / 2)  # local z -> -x
-_Y = rot_x(-math.pi / 2)  # local z -> +y
+_X = Placer(rot_y(-math.pi / 2))  # local z -> -x
+_Y = Placer(rot_x(-math.pi / 2))  # local z -> +y
 
 
 def _disc(r: float, x0: float, x1: float, role: str):
     """Cylinder of radius ``r`` along x from x0 (back) to x1 (front, x1 < x0)."""
-    return cylinder(r, x0 - x1, translation((x0 + x1) / 2, 0, 0) @ _X, role=role)
+    return cylinder(r, x0 - x1, _X.at((x0 + x1) / 2, 0, 0), role=role)
 
 
 def _grasp(x: float, y: float, width: float) -> Grasp:
@@ -57,7 +57,7 @@ def round_lever(p, side: float = 1.0) -> Part:
     r = p.uniform("bar_radius", 0.007, 0.01)
     L = p.uniform("lever_length", 0.1, 0.14)
     prims, x = _rose_and_neck(p, p.uniform("neck_radius", 1.0, 1.3) * r)
-    prims.append(cylinder(r, L, translation(x + r, side * L / 2, 0) @ _Y, role="grip"))
+    prims.append(cylinder(r, L, _Y.at(x + r, side * L / 2, 0), role="grip"))
     return _lever("round_lever", prims, x + r, side, L, 2 * r)
 
 
@@ -102,7 +102,7 @@ def flared_knob(p, side: float = 1.0) -> Part:
     R = p.uniform("knob_radius", 0.022, 0.03)
     d = p.uniform("knob_depth", 0.025, 0.04)
     prims, x = _rose_and_neck(p, p.uniform("neck_radius", 0.008, 0.012))
-    prims.append(frustum(0.5 * R, R, 0.7 * d, translation(x - 0.35 * d + 0.001, 0, 0) @ _X, role="grip"))
+    prims.append(frustum(0.5 * R, R, 0.7 * d, _X.at(x - 0.35 * d + 0.001, 0, 0), role="grip"))
     prims.append(_disc(R, x - 0.7 * d, x - d, "grip"))
     return Part("handle", "flared_knob", prims, anchors={"tip": (x - d, 0.0, 0.0), "front": (x - d, 0.0, 0.0),
                                                          "reach": (R, 0.0, 0.0)},

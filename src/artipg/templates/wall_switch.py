@@ -20,13 +20,13 @@ import math
 import numpy as np
 
 from artipg.geometry import cuboid, frustum, rect_ring, ring, sphere, tri_prism
-from artipg.geometry.transforms import rot_y, translation
+from artipg.geometry.transforms import Placer, rot_y, translation
 from artipg.model.part import Part, Region
 
-_X = rot_y(math.pi / 2)     # local z -> object x (rings facing -x)
-_MX = rot_y(-math.pi / 2)   # local z -> object -x (frustums pointing out of the wall)
+_X = Placer(rot_y(math.pi / 2))   # local z -> object x (rings facing -x)
+_MX = Placer(rot_y(-math.pi / 2))   # local z -> object -x (frustums pointing out of the wall)
 # tri-prism wedge: triangle base along z, apex towards -x, extruded along y
-_WEDGE = np.array([[0.0, -1.0, 0.0, 0.0], [0.0, 0.0, -1.0, 0.0], [1.0, 0.0, 0.0, 0.0], [0.0, 0.0, 0.0, 1.0]])
+_WEDGE = Placer(np.array([[0.0, -1.0, 0.0, 0.0], [0.0, 0.0, -1.0, 0.0], [1.0, 0.0, 0.0, 0.0], [0.0, 0.0, 0.0, 1.0]]))
 
 
 def _plate(name, prims, face_x):
@@ -55,7 +55,7 @@ def framed_plate(p, width: float, height: float) -> Part:
     fw = p.uniform("frame_width", 0.005, 0.009)
     ti = tf - p.uniform("recess", 0.001, 0.003)
     return _plate("framed_plate", [rect_ring(height, width, tf, height - 2 * fw, width - 2 * fw,
-                                             translation(-tf / 2, 0, 0) @ _X, role="plate"),
+                                             _X.at(-tf / 2, 0, 0), role="plate"),
                                    cuboid(ti, width - 2 * fw, height - 2 * fw, translation(-ti / 2, 0, 0),
                                           role="insert")], -ti)
 
@@ -77,7 +77,7 @@ def crowned_rocker(p, width: float, height: float) -> Part:
     d = p.uniform("depth", 0.003, 0.005)
     ridge = p.uniform("ridge", 0.0015, 0.003)
     prims = [cuboid(d, width, height, translation(-d / 2, 0, 0), role="cap"),
-             tri_prism(height, ridge, 0.0, width, translation(-d, 0, 0) @ _WEDGE, role="cap")]
+             tri_prism(height, ridge, 0.0, width, _WEDGE.at(-d, 0, 0), role="cap")]
     return Part("switch", "crowned_rocker", prims, anchors={"front": (-d - ridge, 0.0, 0.0)},
                 regions={"press": Region(("cap",)), "push": Region(("cap",))})
 
@@ -91,7 +91,7 @@ def toggle_lever(p, length: float | None = None) -> Part:
     L = p.uniform("length", 0.01, 0.018, fixed=length)
     r0 = p.uniform("lever_radius", 0.45, 0.7) * rb
     r1 = max(0.00085, p.uniform("tip_ratio", 0.55, 1.0) * r0)
-    prims = [sphere(rb, role="pivot"), frustum(r0, r1, L, translation(-L / 2, 0, 0) @ _MX, role="lever")]
+    prims = [sphere(rb, role="pivot"), frustum(r0, r1, L, _MX.at(-L / 2, 0, 0), role="lever")]
     return Part("switch", "toggle_lever", prims, anchors={"front": (-L, 0.0, 0.0), "ball": (rb, 0.0, 0.0)},
                 regions={"push": Region(("lever",)), "grasp": Region(("lever",))})
 
@@ -115,7 +115,7 @@ def rocker_module(p, builder, plate_link, pose: np.ndarray, width: float, height
     fb = p.uniform("bezel_width", 0.002, 0.004)
     bd = stand + 0.5 * depth
     bezel = rect_ring(height + 2 * (cz + fb), width + 2 * (0.0006 + fb), bd, height + 2 * cz, width + 0.0012,
-                      pose @ translation(-bd / 2, 0, 0) @ _X, role="bezel")
+                      pose @ translation(-bd / 2, 0, 0) @ _X.matrix, role="bezel")
     plate_link.add(Part("body", "rocker_bezel", [bezel]), name="bezel")
     return mount_tilting(builder, plate_link, paddle, pose @ translation(-stand, 0, 0), tilt)
 
@@ -129,7 +129,7 @@ def toggle_module(p, builder, plate_link, pose: np.ndarray, width: float, height
     # threaded bushing around the back half of the pivot ball
     gap, wall = 0.0004, p.uniform("bushing_wall", 0.0015, 0.0025)
     hb = rb + 0.0008
-    bushing = ring(rb + gap + wall, rb + gap, hb, pose=pose @ translation(-t - hb / 2, 0, 0) @ _X, role="boss")
+    bushing = ring(rb + gap + wall, rb + gap, hb, pose=pose @ translation(-t - hb / 2, 0, 0) @ _X.matrix, role="boss")
     plate_link.add(Part("body", "toggle_boss", [cuboid(t, bw, bh, pose @ translation(-t / 2, 0, 0), role="boss"),
                                                 bushing]), name="boss")
     return mount_tilting(builder, plate_link, lever, pose @ translation(-t - rb - 0.0008, 0, 0),
@@ -144,7 +144,7 @@ def button_bezel(p, part: Part, pose: np.ndarray, round_cap: bool) -> Part:
     lo, hi = part.bounds()
     depth = -(lo[0] + hi[0]) / 2  # from the surface to the cap's middle
     w = p.uniform("bezel_width", 0.0015, 0.003)
-    T = pose @ translation(-depth / 2, 0, 0) @ _X
+    T = pose @ translation(-depth / 2, 0, 0) @ _X.matrix
     if round_cap:
         r = max(hi[1], hi[2]) + 0.0008
         prim = ring(r + w, r, depth, pose=T, role="bezel")

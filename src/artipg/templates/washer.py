@@ -22,10 +22,10 @@ import math
 import numpy as np
 
 from artipg.geometry import cuboid, cuboid_between, cylinder, frustum, rect_ring, ring, sphere, torus, tri_prism
-from artipg.geometry.transforms import rot_x, rot_y, rot_z, translation
+from artipg.geometry.transforms import Placer, rot_x, rot_y, rot_z, translation
 from artipg.model.part import Part, Region
 
-_ALONG_X = rot_y(math.pi / 2)  # local z -> +x
+_ALONG_X = Placer(rot_y(math.pi / 2))  # local z -> +x
 _QUARTERS = tuple(rot_x(i * math.pi / 2) for i in range(4))  # the porthole's four corners
 _THIRDS = tuple(rot_x(2 * math.pi * i / 3) for i in range(3))  # the drum's three lifters
 # a fin star of n fins (agitators 3-4, pulsators 4-6): rot_z(2 pi i / n), i < n
@@ -39,7 +39,7 @@ def porthole_panel(p, width: float, height: float, hole: float, thickness: float
     """Front plate with a round opening of radius ``hole`` at its centre: a square
     frame and four corner wedges cut on the tangents at 45 degrees."""
     t = thickness
-    prims = [rect_ring(height, width, t, 2 * hole, 2 * hole, translation(-t / 2, 0, 0) @ _ALONG_X, role="plate")]
+    prims = [rect_ring(height, width, t, 2 * hole, 2 * hole, _ALONG_X.at(-t / 2, 0, 0), role="plate")]
     k = hole * (math.sqrt(2) - 1)
     m = (hole + k) / 2
     for i in range(4):
@@ -60,7 +60,7 @@ def ring_door(p, width: float, height: float, thickness: float | None = None, op
     radius = min(width, height) / 2
     t = p.uniform("thickness", 0.03, 0.05, fixed=thickness)
     ri = radius * p.uniform("glass_ratio", 0.6, 0.75)
-    mid = translation(-t / 2, 0, 0) @ _ALONG_X
+    mid = _ALONG_X.at(-t / 2, 0, 0)
     return _round_door("ring_door", [ring(radius, ri, t, pose=mid, role="rim"), cylinder(ri, 0.006, mid, role="glass")],
                        radius, t)
 
@@ -74,8 +74,8 @@ def dome_door(p, width: float, height: float, thickness: float | None = None, op
         ri = min(ri, opening - 0.012)
     b = ri * p.uniform("bulge", 0.25, 0.4)
     Rs = (ri * ri + b * b) / (2 * b)  # sphere through the glass rim with sagitta b
-    cap = sphere(Rs, Rs - b, Rs, pose=translation(b - Rs, 0, 0) @ _ALONG_X, role="glass")
-    rim = ring(radius, ri, t, pose=translation(-t / 2, 0, 0) @ _ALONG_X, role="rim")
+    cap = sphere(Rs, Rs - b, Rs, pose=_ALONG_X.at(b - Rs, 0, 0), role="glass")
+    rim = ring(radius, ri, t, pose=_ALONG_X.at(-t / 2, 0, 0), role="rim")
     return _round_door("dome_door", [rim, cap], radius, t)
 
 
@@ -85,9 +85,9 @@ def rim_door(p, width: float, height: float, thickness: float | None = None, ope
     t = p.uniform("thickness", 0.03, 0.05, fixed=thickness)
     rt = t / 2
     ri = radius * p.uniform("glass_ratio", 0.65, 0.8)
-    prims = [torus(radius - rt, rt, pose=translation(-rt, 0, 0) @ _ALONG_X, role="rim"),
-             ring(radius - rt, ri, 0.6 * t, pose=translation(-0.5 * t, 0, 0) @ _ALONG_X, role="rim"),
-             cylinder(ri, 0.006, translation(-0.5 * t, 0, 0) @ _ALONG_X, role="glass")]
+    prims = [torus(radius - rt, rt, pose=_ALONG_X.at(-rt, 0, 0), role="rim"),
+             ring(radius - rt, ri, 0.6 * t, pose=_ALONG_X.at(-0.5 * t, 0, 0), role="rim"),
+             cylinder(ri, 0.006, _ALONG_X.at(-0.5 * t, 0, 0), role="glass")]
     return _round_door("rim_door", prims, radius, t)
 
 
@@ -98,9 +98,9 @@ def drum(p, radius: float, length: float, axle: float) -> Part:
     """Stainless drum: an open cylinder with 3 lifters, a back wall and an axle ``axle`` long."""
     w = p.uniform("wall", 0.003, 0.006)
     lh = p.uniform("lifter", 0.03, 0.05)
-    prims = [ring(radius, radius - w, length, pose=translation(length / 2, 0, 0) @ _ALONG_X, role="wall"),
-             cylinder(radius, w, translation(length - w / 2, 0, 0) @ _ALONG_X, role="wall"),
-             cylinder(0.025, axle, translation(length + axle / 2, 0, 0) @ _ALONG_X, role="axle")]
+    prims = [ring(radius, radius - w, length, pose=_ALONG_X.at(length / 2, 0, 0), role="wall"),
+             cylinder(radius, w, _ALONG_X.at(length - w / 2, 0, 0), role="wall"),
+             cylinder(0.025, axle, _ALONG_X.at(length + axle / 2, 0, 0), role="axle")]
     prims += [cuboid(length - w, 0.02, lh, R @ translation(length / 2, 0, radius - w - lh / 2), role="lifter")
               for R in _THIRDS]
     return Part("body", "drum", prims, regions={"rotate": Region(("wall",))})
