@@ -11,20 +11,23 @@ from __future__ import annotations
 import sys
 from dataclasses import dataclass
 from functools import cached_property
-from itertools import chain
+from itertools import accumulate, chain
+from operator import attrgetter, itemgetter
 
 import numpy as np
 
 from artipg.geometry.base import TWO_PI
 from artipg.geometry.patches import FAMILIES, sample_family
+from artipg.model.articulation import stack_poses
 from artipg.rules.streams import streams
-from artipg.vocabulary import SEMANTIC_LABELS, label_id
+from artipg.vocabulary import LABEL_ID, SEMANTIC_LABELS, label_id
 
 
 #: Stream key of point sampling (``seed`` is the sampling seed, not the object's).
 SAMPLING_STREAM = 0x5A3D1E
 #: Family code of each patch family: its position in :data:`FAMILIES` (sampling order).
 FAMILY_CODE = {name: i for i, name in enumerate(FAMILIES)}
+_PRIMITIVES, _SEMANTIC, _POSE = attrgetter("primitives"), attrgetter("semantic"), attrgetter("pose")
 
 
 def transform_boxes(boxes: np.ndarray, W: np.ndarray) -> np.ndarray:
@@ -97,7 +100,7 @@ class _Group:
         return self.comp_area.sum(axis=1)
 
 
-@dataclass
+@dataclass(slots=True)
 class _Family:
     """The patches of one family over the whole object: the cells ``start:stop`` of
     the multinomial draw."""
@@ -161,7 +164,7 @@ class PrimitiveTable:
     def __init__(self, geoms: list[type], flat: np.ndarray, start: list[int], foff: list[int], order: np.ndarray,
                  prim_T: np.ndarray, prim_link: np.ndarray, prim_part: np.ndarray, part_semantic: np.ndarray):
         self.groups = [_Group(self, geom, g) for g, geom in enumerate(geoms)]
-        self._cells = None  # (cell areas, cell primitives) when the families give them whole
+        self._geoms = tuple(geoms)
         self._flat = flat
         self._start = start
         self._foff = foff
@@ -175,47 +178,42 @@ class PrimitiveTable:
     @classmethod
     def of(cls, obj) -> "PrimitiveTable":
         """The table of ``obj``'s primitives (parts in link order, primitives in part order)."""
-        prims, counts, part_poses, part_link, sem = [], [], [], [], []
-        for li, link in enumerate(obj.links):
-            for part in link.parts:
-                part_poses.append(part.pose)
-                part_link.append(li)
-                sem.append(label_id(part.semantic))
-                counts.append(len(part.primitives))
-                prims += part.primitives
-        prim_part = np.arange(len(counts)).repeat(counts)
-        prim_link = np.array(part_link, dtype=np.int64).repeat(counts)
-        sem = np.array(sem, dtype=np.int64)
-        n_root = sum(counts[:len(obj.links[0].parts)]) if obj.links else 0
+        links = obj.links
+        parts = [p for link in links for p in link.parts]
+        per_part = list(map(_PRIMITIVES, parts))
+        counts = list(map(len, per_part))
+        prims = list(chain.from_iterable(per_part))
+        prim_part = np.arange(len(parts)).repeat(counts)
+        prim_link = np.arange(len(links)).repeat([len(link.parts) for link in links])[prim_part]
+        try:
+            sem = np.fromiter(map(LABEL_ID.__getitem__, map(_SEMANTIC, parts)), np.int64, len(parts))
+        except KeyError:
+            for part in parts:
+                label_id(part.semantic)  # raises, naming the vocabulary
+            raise
+        n_root = sum(counts[:len(links[0].parts)]) if links else 0
         if not prims:
             return cls([], np.zeros(0), [0], [0], np.zeros(0, dtype=np.int64), np.zeros((0, 4, 4)), prim_link,
                        prim_part, sem)
         geoms, params, poses = list(zip(*prims))[:3]
-        # concatenating (4, 4) arrays is about twice as fast as np.array on a list of them
-        prim_T = (np.concatenate(part_poses).reshape(-1, 4, 4)[prim_part]
-                  @ np.concatenate(poses).reshape(-1, 4, 4))
+        prim_T = stack_poses(list(map(_POSE, parts)))[prim_part] @ stack_poses(poses)
         # rows of each geometry template, templates in order of first appearance
-        first: dict = {}
-        gid = [first.setdefault(g, len(first)) for g in geoms]
-        N = len(prims)
-        if len(first) == 1:
+        first = dict.fromkeys(geoms)
+        N, G = len(prims), len(first)
+        if G == 1:
             start, order = [0, N], np.arange(N)
             rows = params
         else:
-            by_group: list[list[int]] = [[] for _ in first]
-            for i, j in enumerate(gid):
-                by_group[j].append(i)
-            start = [0]
-            for r in by_group:
-                start.append(start[-1] + len(r))
-            idx = [i for r in by_group for i in r]
+            rank = dict(zip(first, range(G)))
+            gid = list(map(rank.__getitem__, geoms))
+            idx = sorted(range(N), key=gid.__getitem__)  # stable: primitive order within a group
+            start = [0, *accumulate(map(gid.count, range(G)))]
             order = np.array(idx, dtype=np.int64)
-            rows = [params[i] for i in idx]
+            rows = itemgetter(*idx)(params)
         # every row of a group has its template's parameter count (numpy would refuse ragged rows)
         foff = [0]
-        for g in range(len(first)):
-            width = len(rows[start[g]])
-            foff.append(foff[-1] + width * (start[g + 1] - start[g]))
+        for g in range(G):
+            foff.append(foff[-1] + len(rows[start[g]]) * (start[g + 1] - start[g]))
         if sum(map(len, rows)) != foff[-1]:
             raise ValueError("primitives of one geometry template have different parameter counts")
         flat = np.fromiter(chain.from_iterable(rows), float, foff[-1])
@@ -229,18 +227,16 @@ class PrimitiveTable:
         """The groups as the compiled kernels (:mod:`artipg.geometry.kernels`) take them:
         (packed parameters (F,), their group offsets (G + 1,), group row offsets
         (G + 1,), global primitive index of each row (N,), template codes (G,), numpy's
-        cos and sin of the packed parameters (F,), :data:`~artipg.geometry.kernels.TRIG`);
-        None when a template has no compiled twin."""
-        info = _kernel_info(tuple(g.geom for g in self.groups))
+        cos and sin of the packed parameters (F,)); None when a template has no compiled
+        twin."""
+        info = _kernel_info(self._geoms)
         if info is None:
             return None
-        from artipg.geometry.kernels import TRIG
-
         code, arcs, _ = info
         flat = self._flat
         # the arcs of rings and tori are the only parameters whose cos and sin are read
         trig = (np.cos(flat), np.sin(flat)) if arcs else (flat, flat)
-        return (flat, np.array(self._foff), np.array(self._start), self._order, code) + trig + (TRIG,)
+        return (flat, np.array(self._foff), np.array(self._start), self._order, code) + trig
 
     def _compiled_boxes(self) -> bool:
         """Whether local boxes and bounds take the compiled path: once numba is loaded
@@ -249,22 +245,58 @@ class PrimitiveTable:
         return "numba" in sys.modules and self._packed is not None
 
     @cached_property
-    def families(self) -> list[_Family]:
-        """Non-empty patch families in :data:`FAMILIES` order (cells with area > 0)."""
+    def _cells(self) -> tuple:
+        """(family code (K,), parameter rows (K, 15), areas (K,), primitives (K,),
+        running area sums (K,), cells per family (6,) list) of the patch cells, from
+        the compiled kernel, or from :meth:`_plain_families` without one."""
         packed = self._packed
         if packed is None:
-            return self._plain_families()
-        from artipg.geometry.kernels import TABLES, families
+            return self._cells_of(self._plain_families())
+        from artipg.geometry.kernels import Q_WIDTH, ROW_CELLS, cells
 
-        params, area, prim, counts = families(*packed, *TABLES)
+        code = packed[4].tolist()
+        start = self._start
+        R = sum(ROW_CELLS[c] * (start[g + 1] - start[g]) for g, c in enumerate(code))
+        Q = np.zeros((R, Q_WIDTH))
+        area, cdf = np.empty(R), np.empty(R)
+        ints = np.empty((2, R), dtype=np.int64)
+        counts = np.empty(6, dtype=np.int64)
+        K = cells(*packed, Q, area, ints[0], ints[1], cdf, counts)
+        return ints[1, :K], Q[:K], area[:K], ints[0, :K], cdf[:K], counts.tolist()
+
+    @staticmethod
+    def _cells_of(fams: list) -> tuple:
+        """:attr:`_cells` of the families ``fams``."""
+        K = fams[-1].stop if fams else 0
+        code = np.empty(K, dtype=np.int64)
+        Q = np.zeros((K, max(FAMILIES.values())))
+        counts = [0] * len(FAMILIES)
+        for f in fams:
+            c = FAMILY_CODE[f.name]
+            code[f.start:f.stop] = c
+            Q[f.start:f.stop, :len(f.params)] = f.params.T
+            counts[c] = f.stop - f.start
+        if len(fams) == 1:
+            area, prim = fams[0].area, fams[0].prim
+        elif fams:
+            area, prim = np.concatenate([f.area for f in fams]), np.concatenate([f.prim for f in fams])
+        else:
+            area, prim = np.zeros(0), np.zeros(0, dtype=np.int64)
+        return code, Q, area, prim, np.cumsum(area), counts
+
+    @cached_property
+    def families(self) -> list[_Family]:
+        """Non-empty patch families in :data:`FAMILIES` order (cells with area > 0)."""
+        if self._packed is None:
+            return self._plain_families()
+        _, Q, area, prim, _, counts = self._cells
         out = []
         start = 0
-        for name, P, k in zip(FAMILIES, params, counts.tolist()):
+        for (name, p), k in zip(FAMILIES.items(), counts):
             if k:
-                out.append(_Family(name, P, prim[start:start + k], area[start:start + k], start, start + k))
-                start += k
-        if out:
-            self._cells = (area, prim)
+                stop = start + k
+                out.append(_Family(name, Q[start:stop, :p].T, prim[start:stop], area[start:stop], start, stop))
+                start = stop
         return out
 
     def _plain_families(self) -> list[_Family]:
@@ -302,39 +334,31 @@ class PrimitiveTable:
             start += K
         return out
 
-    @cached_property
+    @property
     def cell_areas(self) -> np.ndarray:
         """Area (K,) of every patch cell, m^2, in family order."""
-        fams = self.families
-        if self._cells is not None:  # the compiled families return them whole
-            return self._cells[0]
-        return np.concatenate([f.area for f in fams]) if len(fams) != 1 else fams[0].area
+        return self._cells[2]
 
-    @cached_property
+    @property
     def cell_prim(self) -> np.ndarray:
         """Global primitive index (K,) of every patch cell."""
-        fams = self.families
-        if self._cells is not None:
-            return self._cells[1]
-        return np.concatenate([f.prim for f in fams]) if len(fams) != 1 else fams[0].prim
+        return self._cells[3]
 
-    @cached_property
+    @property
     def cell_rows(self) -> tuple[np.ndarray, np.ndarray]:
         """Family code (K,) and parameters (K, 15) of every patch cell, one row per cell
         (zero-padded past the family's parameter count): the draw kernel's layout."""
-        fams = self.families
-        K = fams[-1].stop if fams else 0
-        code = np.empty(K, dtype=np.int64)
-        Q = np.zeros((K, max(FAMILIES.values())))
-        for f in fams:
-            code[f.start:f.stop] = FAMILY_CODE[f.name]
-            Q[f.start:f.stop, :len(f.params)] = f.params.T
-        return code, Q
+        return self._cells[:2]
+
+    @property
+    def cell_cdf(self) -> np.ndarray:
+        """Running sum (K,) of :attr:`cell_areas`, m^2 (``np.cumsum``)."""
+        return self._cells[4]
 
     @cached_property
     def cell_p(self) -> np.ndarray:
         """Multinomial probabilities (K,) of the cells: proportional to area."""
-        a = self.cell_areas
+        a = self._cells[2]
         return a / a.sum()
 
     def part_cell_p(self, parts) -> np.ndarray:
@@ -378,11 +402,15 @@ class PrimitiveTable:
 
         packed = self._packed
         out = np.empty((self.n_prims, 2, 3))
-        local_boxes(*packed, out)
-        if _kernel_info(tuple(g.geom for g in self.groups))[2]:  # prisms: bounds_batch needs numpy's cos
+        ch = np.empty((2, self.n_prims, 3))
+        local_boxes(*packed, out, ch)
+        if _kernel_info(self._geoms)[2]:  # prisms: bounds_batch needs numpy's cos
             for g, c in zip(self.groups, packed[4].tolist()):
                 if c >= len(BOX_CODES):
-                    out[g.prim] = g.geom.bounds_batch(g.P)
+                    b = out[g.prim] = g.geom.bounds_batch(g.P)
+                    ch[0, g.prim] = (b[:, 0] + b[:, 1]) * 0.5
+                    ch[1, g.prim] = (b[:, 1] - b[:, 0]) * 0.5
+        self.__dict__["_local_centre_half"] = ch
         return out
 
     def _plain_local_boxes(self) -> np.ndarray:
@@ -416,12 +444,16 @@ class PrimitiveTable:
 
     @cached_property
     def _local_centre_half(self) -> np.ndarray:
-        """Centres and half extents (2, N, 3) of :attr:`local_boxes` (compiled path only)."""
-        from artipg.geometry.kernels import centre_half
+        """Centres and half extents (2, N, 3) of :attr:`local_boxes` (compiled path only;
+        the compiled :attr:`local_boxes` sets them with the boxes)."""
+        boxes = self.local_boxes
+        ch = self.__dict__.get("_local_centre_half")
+        if ch is None:
+            from artipg.geometry.kernels import centre_half
 
-        out = np.empty((2, self.n_prims, 3))
-        centre_half(self.local_boxes, out)
-        return out
+            ch = np.empty((2, self.n_prims, 3))
+            centre_half(boxes, ch)
+        return ch
 
 
 @dataclass

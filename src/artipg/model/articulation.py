@@ -5,6 +5,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 from functools import cached_property
+from operator import attrgetter
 
 import numpy as np
 
@@ -12,7 +13,23 @@ from artipg.geometry.transforms import IDENTITY, unit_rotation
 from artipg.model.part import Part
 
 JOINT_TYPES = ("fixed", "revolute", "prismatic", "continuous")
-_matmul = np.matmul
+_F64 = {np.dtype(np.float64)}
+_DTYPE = attrgetter("dtype")
+
+
+def stack_poses(poses) -> np.ndarray:
+    """The (4, 4) arrays ``poses`` stacked (n, 4, 4), float64; possibly read-only.
+
+    Joins the arrays' bytes when they are all C-contiguous float64 (a few times faster
+    than ``np.concatenate`` on a few dozen small arrays), else concatenates them."""
+    try:
+        if set(map(_DTYPE, poses)) == _F64:
+            buf = b"".join(poses)  # TypeError when one is not C-contiguous
+            if len(buf) == 128 * len(poses):
+                return np.frombuffer(buf).reshape(-1, 4, 4)
+    except (AttributeError, BufferError, TypeError):
+        pass
+    return np.concatenate(poses).reshape(-1, 4, 4)
 
 
 @dataclass(eq=False)
@@ -172,7 +189,7 @@ class ArticulatedObject:
 
     def link_poses(self, qpos=None) -> np.ndarray:
         """Pose (L, 4, 4) of every link in the object frame at joint state ``qpos``."""
-        q = self.qpos_dict(qpos)
+        q = self.qpos_dict(qpos) if qpos is not None else None
         links = self.links
         T = np.empty((len(links), 4, 4))
         T[0] = IDENTITY
@@ -180,8 +197,11 @@ class ArticulatedObject:
             return T
         # a level at a time: T[link] = T[parent] @ origin for all its links at once (the
         # same product for each), then the moved ones times their motion
-        origins = np.concatenate([lk.joint.origin for lk in links[1:]]).reshape(-1, 4, 4)
+        origins = stack_poses([lk.joint.origin for lk in links[1:]])
         for kids, parents, joints, members in self._levels:
+            if not q and type(kids) is slice:
+                np.matmul(T[parents], origins[joints], out=T[kids])
+                continue
             A = T[parents] @ origins[joints]
             if q:
                 for k, i in enumerate(members):
