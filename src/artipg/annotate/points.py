@@ -9,6 +9,7 @@ frame with one gathered transform, so the cost hardly grows with the object.
 from __future__ import annotations
 
 import sys
+from struct import pack_into
 from dataclasses import dataclass
 from functools import cached_property
 from itertools import accumulate, chain
@@ -113,8 +114,18 @@ class _Family:
     stop: int
 
 
-#: Geometry templates of a table's groups -> (their codes (G,), any ring or torus, any
-#: prism) for the compiled kernels, or None when one has no compiled twin.
+def _kernels():
+    """:mod:`artipg.geometry.kernels`, imported on first use (it loads numba); a
+    function-level ``from ... import`` costs more than the small kernels it calls."""
+    k = sys.modules.get("artipg.geometry.kernels")
+    if k is None:
+        import artipg.geometry.kernels as k
+    return k
+
+
+#: Geometry templates of a table's groups -> (their codes (G,), the same as a tuple,
+#: any ring or torus, any prism) for the compiled kernels, or None when one has no
+#: compiled twin.
 _KERNEL_INFO: dict[tuple, tuple | None] = {}
 
 
@@ -127,7 +138,8 @@ def _kernel_info(geoms: tuple) -> tuple | None:
     code = [CODES.get(g) for g in geoms]
     info = None
     if code and None not in code:
-        info = (np.array(code, dtype=np.int64), any(c in ARC_COLUMN for c in code), max(code) >= len(BOX_CODES))
+        info = (np.array(code, dtype=np.int64), tuple(code), any(c in ARC_COLUMN for c in code),
+                max(code) >= len(BOX_CODES))
     if len(_KERNEL_INFO) < 4096:  # template combinations: a few dozen
         _KERNEL_INFO[geoms] = info
     return info
@@ -216,7 +228,8 @@ class PrimitiveTable:
             foff.append(foff[-1] + len(rows[start[g]]) * (start[g + 1] - start[g]))
         if sum(map(len, rows)) != foff[-1]:
             raise ValueError("primitives of one geometry template have different parameter counts")
-        flat = np.fromiter(chain.from_iterable(rows), float, foff[-1])
+        flat = np.empty(foff[-1])
+        pack_into(f"{foff[-1]}d", flat, 0, *chain.from_iterable(rows))  # float() of each, as np.fromiter
         table = cls(list(first), flat, start, foff, order, prim_T, prim_link, prim_part, sem)
         table._n_root = n_root
         return table
@@ -227,16 +240,24 @@ class PrimitiveTable:
         """The groups as the compiled kernels (:mod:`artipg.geometry.kernels`) take them:
         (packed parameters (F,), their group offsets (G + 1,), group row offsets
         (G + 1,), global primitive index of each row (N,), template codes (G,), numpy's
-        cos and sin of the packed parameters (F,)); None when a template has no compiled
-        twin."""
+        cos and sin of the packed parameters (F,), of the groups with an arc, zeros
+        elsewhere); None when a template has no compiled twin."""
         info = _kernel_info(self._geoms)
         if info is None:
             return None
-        code, arcs, _ = info
+        code, codes, arcs, _ = info
         flat = self._flat
-        # the arcs of rings and tori are the only parameters whose cos and sin are read
-        trig = (np.cos(flat), np.sin(flat)) if arcs else (flat, flat)
-        return (flat, np.array(self._foff), np.array(self._start), self._order, code) + trig
+        if arcs:  # the arcs of rings and tori are the only parameters whose cos and sin are read
+            C, S = np.zeros(len(flat)), np.zeros(len(flat))
+            foff, arc = self._foff, _kernels().ARC_COLUMN
+            for g, c in enumerate(codes):
+                if c in arc:
+                    a, b = foff[g], foff[g + 1]
+                    np.cos(flat[a:b], out=C[a:b])
+                    np.sin(flat[a:b], out=S[a:b])
+        else:
+            C = S = flat
+        return flat, np.array(self._foff), np.array(self._start), self._order, code, C, S
 
     def _compiled_boxes(self) -> bool:
         """Whether local boxes and bounds take the compiled path: once numba is loaded
@@ -252,16 +273,14 @@ class PrimitiveTable:
         packed = self._packed
         if packed is None:
             return self._cells_of(self._plain_families())
-        from artipg.geometry.kernels import Q_WIDTH, ROW_CELLS, cells
-
-        code = packed[4].tolist()
-        start = self._start
-        R = sum(ROW_CELLS[c] * (start[g + 1] - start[g]) for g, c in enumerate(code))
-        Q = np.zeros((R, Q_WIDTH))
+        k = _kernels()
+        start, rows = self._start, k.ROW_CELLS
+        R = sum([rows[c] * (start[g + 1] - start[g]) for g, c in enumerate(_kernel_info(self._geoms)[1])])
+        Q = np.zeros((R, k.Q_WIDTH))
         area, cdf = np.empty(R), np.empty(R)
         ints = np.empty((2, R), dtype=np.int64)
         counts = np.empty(6, dtype=np.int64)
-        K = cells(*packed, Q, area, ints[0], ints[1], cdf, counts)
+        K = k.cells(*packed, Q, area, ints[0], ints[1], cdf, counts)
         return ints[1, :K], Q[:K], area[:K], ints[0, :K], cdf[:K], counts.tolist()
 
     @staticmethod
@@ -398,15 +417,14 @@ class PrimitiveTable:
         """Bounding box (N, 2, 3) of every primitive in its own frame, by global index."""
         if not self._compiled_boxes():
             return self._plain_local_boxes()
-        from artipg.geometry.kernels import BOX_CODES, local_boxes
-
-        packed = self._packed
+        k = _kernels()
         out = np.empty((self.n_prims, 2, 3))
         ch = np.empty((2, self.n_prims, 3))
-        local_boxes(*packed, out, ch)
-        if _kernel_info(self._geoms)[2]:  # prisms: bounds_batch needs numpy's cos
-            for g, c in zip(self.groups, packed[4].tolist()):
-                if c >= len(BOX_CODES):
+        k.local_boxes(*self._packed, out, ch)
+        info = _kernel_info(self._geoms)
+        if info[3]:  # prisms: bounds_batch needs numpy's cos
+            for g, c in zip(self.groups, info[1]):
+                if c >= len(k.BOX_CODES):
                     b = out[g.prim] = g.geom.bounds_batch(g.P)
                     ch[0, g.prim] = (b[:, 0] + b[:, 1]) * 0.5
                     ch[1, g.prim] = (b[:, 1] - b[:, 0]) * 0.5
@@ -433,13 +451,11 @@ class PrimitiveTable:
             b[:, 0].min(axis=0, out=out[0])
             b[:, 1].max(axis=0, out=out[1])
             return out
-        from artipg.geometry.kernels import box_union
-
         # transform_boxes and the union, with its two matrix products left to numpy (BLAS)
         W = self.world_all(link_poses)
         c, h = self._local_centre_half
         R = W[:, :3, :3]
-        box_union(R @ c[:, :, None], np.abs(R) @ h[:, :, None], W, out)
+        _kernels().box_union(R @ c[:, :, None], np.abs(R) @ h[:, :, None], W, out)
         return out
 
     @cached_property
@@ -449,10 +465,8 @@ class PrimitiveTable:
         boxes = self.local_boxes
         ch = self.__dict__.get("_local_centre_half")
         if ch is None:
-            from artipg.geometry.kernels import centre_half
-
             ch = np.empty((2, self.n_prims, 3))
-            centre_half(boxes, ch)
+            _kernels().centre_half(boxes, ch)
         return ch
 
 

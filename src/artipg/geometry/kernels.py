@@ -455,8 +455,9 @@ def cells(flat, foff, start, prim, code, cos_f, sin_f, Q, area, cell_prim, cell_
     code : (G,) int64
         :data:`CODES` of each group's template.
     cos_f, sin_f : (F,) ndarray
-        numpy's cos and sin of ``flat`` (read for the arcs of rings and tori only, and
-        only those below 2π: the arcs numpy takes the cosines of).
+        numpy's cos and sin of ``flat``, read for the arcs of rings and tori only (and
+        only those below 2π: the arcs numpy takes the cosines of); other entries may
+        hold anything.
     Q : (R, Q_WIDTH) ndarray, zeros
         Out: each cell's family parameters (zero-padded).
     area, cdf : (R,) ndarray
@@ -511,7 +512,7 @@ def cells(flat, foff, start, prim, code, cos_f, sin_f, Q, area, cell_prim, cell_
     width = Q.shape[1]
     for f in range(6):
         b, k = base[f], counts[f]
-        if b != o:  # earlier rows only: whole rows move, with their zero padding
+        if b != o:  # to earlier rows only: whole rows move, with their zero padding
             for r in range(k):
                 for j in range(width):
                     Q[o + r, j] = Q[b + r, j]

@@ -5,7 +5,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 from functools import cached_property
-from operator import attrgetter
+from itertools import repeat
+from operator import attrgetter, is_
 
 import numpy as np
 
@@ -13,7 +14,7 @@ from artipg.geometry.transforms import IDENTITY, unit_rotation
 from artipg.model.part import Part
 
 JOINT_TYPES = ("fixed", "revolute", "prismatic", "continuous")
-_F64 = {np.dtype(np.float64)}
+_F64 = np.dtype(np.float64)
 _DTYPE = attrgetter("dtype")
 
 
@@ -23,7 +24,7 @@ def stack_poses(poses) -> np.ndarray:
     Joins the arrays' bytes when they are all C-contiguous float64 (a few times faster
     than ``np.concatenate`` on a few dozen small arrays), else concatenates them."""
     try:
-        if set(map(_DTYPE, poses)) == _F64:
+        if all(map(is_, map(_DTYPE, poses), repeat(_F64))):  # (an unpickled float64 is not _F64)
             buf = b"".join(poses)  # TypeError when one is not C-contiguous
             if len(buf) == 128 * len(poses):
                 return np.frombuffer(buf).reshape(-1, 4, 4)
@@ -165,12 +166,13 @@ class ArticulatedObject:
     def _levels(self) -> list[tuple]:
         """The non-root links by depth: (links, parent, joint indices, link indices) per
         level, the first three slices or one parent's index when they can be, else arrays."""
-        idx = self.link_index
         links = self.links
-        parent = [idx[lk.joint.parent] for lk in links[1:]]
-        n = len(parent)
-        if not any(parent):  # every link on the root: one level
+        n = len(links) - 1
+        parents = [lk.joint.parent for lk in links[1:]]
+        if parents.count(links[0].name) == n:  # every link on the root: one level
             return [(slice(1, n + 1), 0, slice(0, n), range(1, n + 1))] if n else []
+        idx = self.link_index
+        parent = [idx[p] for p in parents]
         depth = [0] * (n + 1)
         for i, p in enumerate(parent, 1):
             if p >= i:
