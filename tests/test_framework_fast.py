@@ -5,7 +5,6 @@ and local boxes that PrimitiveTable uses (artipg.geometry.kernels)."""
 from __future__ import annotations
 
 import copy
-import pickle
 
 import numpy as np
 import pytest
@@ -16,7 +15,6 @@ from artipg.geometry import cuboid
 from artipg.geometry.patches import FAMILIES
 from artipg.geometry.transforms import rot_x, rot_z, translation
 from artipg.model import ObjectBuilder, Part
-from artipg.model.articulation import stack_poses
 from test_points_fast import GEOMS, _object_groups, _param_cases, _random_params, same
 
 
@@ -135,20 +133,6 @@ def test_compiled_tables_take_only_exact_affine_rows():
 
 
 # ---------------------------------------------------------------- link poses and the normalisation
-
-def test_stack_poses_is_np_concatenate():
-    rng = np.random.default_rng(3)
-    poses = [rng.random((4, 4)) for _ in range(7)] + [np.eye(4), -np.zeros((4, 4))]
-    want = np.concatenate(poses).reshape(-1, 4, 4)
-    assert same(stack_poses(poses), want) and same(stack_poses(tuple(poses)), want)
-    wide = rng.random((4, 8))
-    unpickled = pickle.loads(pickle.dumps(rng.random((4, 4))))  # float64, but not the np.dtype(float) object
-    for odd in (np.eye(4, dtype=np.int64), np.eye(4, dtype=np.float32), wide[:, ::2], np.eye(4).T[::1, ::1],
-                [[1.0, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]], unpickled, np.eye(4).astype(">f8")):
-        mixed = poses[:3] + [odd] + poses[3:]
-        assert same(stack_poses(mixed), np.concatenate(mixed).reshape(-1, 4, 4))
-    assert stack_poses([]).shape == (0, 4, 4)
-
 
 def test_primitive_table_of_groups_like_a_per_primitive_loop():
     """The table PrimitiveTable.of builds (link order, groups by first appearance, packed

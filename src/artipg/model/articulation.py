@@ -5,8 +5,6 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 from functools import cached_property
-from itertools import repeat
-from operator import attrgetter, is_
 
 import numpy as np
 
@@ -14,23 +12,7 @@ from artipg.geometry.transforms import IDENTITY, unit_rotation
 from artipg.model.part import Part
 
 JOINT_TYPES = ("fixed", "revolute", "prismatic", "continuous")
-_F64 = np.dtype(np.float64)
-_DTYPE = attrgetter("dtype")
-
-
-def stack_poses(poses) -> np.ndarray:
-    """The (4, 4) arrays ``poses`` stacked (n, 4, 4), float64; possibly read-only.
-
-    Joins the arrays' bytes when they are all C-contiguous float64 (a few times faster
-    than ``np.concatenate`` on a few dozen small arrays), else concatenates them."""
-    try:
-        if all(map(is_, map(_DTYPE, poses), repeat(_F64))):  # (an unpickled float64 is not _F64)
-            buf = b"".join(poses)  # TypeError when one is not C-contiguous
-            if len(buf) == 128 * len(poses):
-                return np.frombuffer(buf).reshape(-1, 4, 4)
-    except (AttributeError, BufferError, TypeError):
-        pass
-    return np.concatenate(poses).reshape(-1, 4, 4)
+_matmul = np.matmul
 
 
 @dataclass(eq=False)
@@ -191,7 +173,7 @@ class ArticulatedObject:
 
     def link_poses(self, qpos=None) -> np.ndarray:
         """Pose (L, 4, 4) of every link in the object frame at joint state ``qpos``."""
-        q = self.qpos_dict(qpos) if qpos is not None else None
+        q = self.qpos_dict(qpos)
         links = self.links
         T = np.empty((len(links), 4, 4))
         T[0] = IDENTITY
@@ -199,11 +181,8 @@ class ArticulatedObject:
             return T
         # a level at a time: T[link] = T[parent] @ origin for all its links at once (the
         # same product for each), then the moved ones times their motion
-        origins = stack_poses([lk.joint.origin for lk in links[1:]])
+        origins = np.concatenate([lk.joint.origin for lk in links[1:]]).reshape(-1, 4, 4)
         for kids, parents, joints, members in self._levels:
-            if not q and type(kids) is slice:
-                np.matmul(T[parents], origins[joints], out=T[kids])
-                continue
             A = T[parents] @ origins[joints]
             if q:
                 for k, i in enumerate(members):

@@ -7,7 +7,7 @@ import math
 import numpy as np
 
 from artipg.geometry.transforms import IDENTITY, translation
-from artipg.model.articulation import JOINT_TYPES, ArticulatedObject, Joint, Link, stack_poses
+from artipg.model.articulation import JOINT_TYPES, ArticulatedObject, Joint, Link
 from artipg.model.part import Part
 
 
@@ -125,10 +125,15 @@ class ObjectBuilder:
             # one stacked product (the same 4x4 products); the poses become its slices
             n = len(root.parts)
             if n or kids:
-                moved = S @ stack_poses([part.pose for part in root.parts] + [j.origin for j in kids])
+                moved = S @ _stack([part.pose for part in root.parts] + [j.origin for j in kids])
                 for part, T in zip(root.parts, moved):
                     part.pose = T
                 for j, T in zip(kids, moved[n:]):
                     j.origin = T
             obj.primitive_table.shift_root(S)
         return obj
+
+
+def _stack(poses: list) -> np.ndarray:
+    """(n, 4, 4) array of (4, 4) poses (concatenating is faster than np.array)."""
+    return np.concatenate(poses).reshape(-1, 4, 4)
