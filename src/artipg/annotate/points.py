@@ -97,17 +97,40 @@ class _Group:
         return self.comp_area.sum(axis=1)
 
 
-@dataclass(slots=True)
 class _Family:
     """The patches of one family over the whole object: the cells ``start:stop`` of
-    the multinomial draw."""
+    the multinomial draw.
 
-    name: str
-    params: np.ndarray  # (p, K) family parameters, primitive-local frames
-    prim: np.ndarray    # (K,) global primitive index
-    area: np.ndarray    # (K,) m^2
-    start: int
-    stop: int
+    Attributes
+    ----------
+    name : str
+    params : (p, K) ndarray
+        Family parameters, primitive-local frames.
+    prim : (K,) int64
+        Global primitive index.
+    area : (K,) ndarray
+        m^2.
+    start, stop : int
+    """
+
+    __slots__ = ("name", "start", "stop", "_arrays", "_cells")
+
+    def __init__(self, name: str, params, prim, area, start: int, stop: int, cells: tuple | None = None):
+        self.name, self.start, self.stop = name, start, stop
+        # from the table's cell arrays (cells), the views are made when first read
+        self._arrays = None if cells is not None else (params, prim, area)
+        self._cells = cells
+
+    def _array(self, i: int) -> np.ndarray:
+        if self._arrays is None:
+            _, Q, area, prim = self._cells[:4]
+            s, e = self.start, self.stop
+            self._arrays = (Q[s:e, :FAMILIES[self.name]].T, prim[s:e], area[s:e])
+        return self._arrays[i]
+
+    params = property(lambda self: self._array(0))
+    prim = property(lambda self: self._array(1))
+    area = property(lambda self: self._array(2))
 
 
 def _kernels():
@@ -300,14 +323,13 @@ class PrimitiveTable:
         """Non-empty patch families in :data:`FAMILIES` order (cells with area > 0)."""
         if self._packed is None:
             return self._plain_families()
-        _, Q, area, prim, _, counts = self._cells
+        cells = self._cells
         out = []
         start = 0
-        for (name, p), k in zip(FAMILIES.items(), counts):
+        for name, k in zip(FAMILIES, cells[5]):
             if k:
-                stop = start + k
-                out.append(_Family(name, Q[start:stop, :p].T, prim[start:stop], area[start:stop], start, stop))
-                start = stop
+                out.append(_Family(name, None, None, None, start, start + k, cells))
+                start += k
         return out
 
     def _plain_families(self) -> list[_Family]:
