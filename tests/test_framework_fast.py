@@ -12,6 +12,7 @@ import pytest
 import artipg
 from artipg.annotate.points import PrimitiveTable
 from artipg.geometry import cuboid
+from artipg.geometry.patches import FAMILIES
 from artipg.geometry.transforms import rot_x, rot_z, translation
 from artipg.model import ObjectBuilder, Part
 from test_points_fast import GEOMS, _object_groups, _param_cases, _random_params, same
@@ -46,13 +47,33 @@ def _table(geoms_params: list, rng) -> PrimitiveTable:
                           np.zeros(N, dtype=np.int64), np.zeros(N, dtype=np.int64), np.zeros(1, dtype=np.int64))
 
 
+def _plain_cell_rows(fams) -> tuple:
+    """Family code (K,) and zero-padded parameter rows (K, 15) of every cell, family by family."""
+    code = np.concatenate([np.full(f.stop - f.start, list(FAMILIES).index(f.name)) for f in fams])
+    Q = np.zeros((len(code), max(FAMILIES.values())))
+    for f in fams:
+        Q[f.start:f.stop, :len(f.params)] = f.params.T
+    return code, Q
+
+
 def _same_families(table) -> bool:
     got, want = table.families, table._plain_families()
+    code, Q = table.cell_rows
+    want_code, want_Q = _plain_cell_rows(want)
+    area = np.concatenate([w.area for w in want])
     return len(got) == len(want) and all(
         (g.name, g.start, g.stop) == (w.name, w.start, w.stop) and same(g.params, w.params)
         and same(g.prim, w.prim) and same(g.area, w.area) for g, w in zip(got, want)) \
-        and same(table.cell_areas, np.concatenate([w.area for w in want])) \
-        and same(table.cell_prim, np.concatenate([w.prim for w in want]))
+        and same(table.cell_areas, area) and same(table.cell_prim, np.concatenate([w.prim for w in want])) \
+        and same(code, want_code) and same(Q, want_Q) and same(table.cell_cdf, np.cumsum(area)) \
+        and same(table.cell_p, area / area.sum())
+
+
+def _same_centre_half(table) -> bool:
+    """The compiled centres and half extents of the local boxes, against transform_boxes' formula."""
+    b = table._plain_local_boxes()
+    c, h = table._local_centre_half
+    return same(c, (b[:, 0] + b[:, 1]) * 0.5) and same(h, (b[:, 1] - b[:, 0]) * 0.5)
 
 
 @pytest.mark.parametrize("name", sorted(GEOMS))
@@ -66,6 +87,7 @@ def test_compiled_families_and_local_boxes_match_the_templates(name):
         assert table._packed is not None and table._compiled_boxes()
         assert _same_families(table), name
         assert same(table.local_boxes, table._plain_local_boxes()), name
+        assert _same_centre_half(table), name
 
 
 def test_compiled_families_and_local_boxes_match_on_mixed_tables():
@@ -76,7 +98,7 @@ def test_compiled_families_and_local_boxes_match_on_mixed_tables():
         picked = rng.permutation(names)[:int(rng.integers(1, len(names) + 1))]
         table = _table([(GEOMS[n], _random_params(n, int(rng.integers(1, 9)), rng)) for n in picked], rng)
         assert _same_families(table)
-        assert same(table.local_boxes, table._plain_local_boxes())
+        assert same(table.local_boxes, table._plain_local_boxes()) and _same_centre_half(table)
 
 
 @pytest.mark.parametrize("category", CATS)
@@ -85,15 +107,19 @@ def test_compiled_table_matches_the_numpy_table_on_objects(category):
         obj = artipg.generate(category, seed)
         table = obj.primitive_table
         assert table._packed is not None and _same_families(table) and table._compiled_boxes()
-        assert same(table.local_boxes, table._plain_local_boxes())
+        assert same(table.local_boxes, table._plain_local_boxes()) and _same_centre_half(table)
         plain = copy.copy(table)  # the same arrays, without the cached compiled results
-        for k in ("local_boxes", "_local_centre_half", "families", "cell_areas", "cell_prim", "cell_p"):
+        for k in ("local_boxes", "_local_centre_half", "families", "_cells", "cell_p"):
             plain.__dict__.pop(k, None)
         plain._packed = None  # the numpy path throughout
         for qpos in (None, obj.limits()[:, 1], 0.3 * obj.limits()[:, 0] + 0.7 * obj.limits()[:, 1]):
             L = obj.link_poses(qpos)
             assert same(table.bounds(L), plain.bounds(L))
         assert same(table.world_boxes(L), plain.world_boxes(L))
+        # the plain path's cells, from the plain families
+        assert _same_families(plain)
+        assert all(same(a, b) for a, b in zip(plain.cell_rows, table.cell_rows))
+        assert same(plain.cell_cdf, table.cell_cdf) and same(plain.cell_p, table.cell_p)
 
 
 def test_compiled_tables_take_only_exact_affine_rows():
@@ -107,6 +133,27 @@ def test_compiled_tables_take_only_exact_affine_rows():
 
 
 # ---------------------------------------------------------------- link poses and the normalisation
+
+def test_primitive_table_of_groups_like_a_per_primitive_loop():
+    """The table PrimitiveTable.of builds (link order, groups by first appearance, packed
+    parameters), against a per-primitive loop."""
+    for category in CATS:
+        obj = artipg.generate(category, 1)
+        table = PrimitiveTable.of(obj)
+        rows, geoms = [], []
+        for link in obj.links:
+            for part in link.parts:
+                for prim in part.primitives:
+                    rows.append((prim.geom, prim.params))
+                    if prim.geom not in geoms:
+                        geoms.append(prim.geom)
+        assert [g.geom for g in table.groups] == geoms
+        for g in table.groups:
+            idx = [i for i, (geom, _) in enumerate(rows) if geom is g.geom]
+            assert same(g.prim, np.array(idx, dtype=np.int64))
+            assert same(g.P, np.array([rows[i][1] for i in idx], dtype=float))
+        assert table._n_root == sum(len(p.primitives) for p in obj.links[0].parts)
+
 
 def _plain_link_poses(obj, qpos=None):
     """One link at a time, as the definition reads."""

@@ -98,21 +98,54 @@ class _Group:
         return self.comp_area.sum(axis=1)
 
 
-@dataclass
 class _Family:
     """The patches of one family over the whole object: the cells ``start:stop`` of
-    the multinomial draw."""
+    the multinomial draw.
 
-    name: str
-    params: np.ndarray  # (p, K) family parameters, primitive-local frames
-    prim: np.ndarray    # (K,) global primitive index
-    area: np.ndarray    # (K,) m^2
-    start: int
-    stop: int
+    Attributes
+    ----------
+    name : str
+    params : (p, K) ndarray
+        Family parameters, primitive-local frames.
+    prim : (K,) int64
+        Global primitive index.
+    area : (K,) ndarray
+        m^2.
+    start, stop : int
+    """
+
+    __slots__ = ("name", "start", "stop", "_arrays", "_cells")
+
+    def __init__(self, name: str, params, prim, area, start: int, stop: int, cells: tuple | None = None):
+        self.name, self.start, self.stop = name, start, stop
+        # from the table's cell arrays (cells), the views are made when first read
+        self._arrays = None if cells is not None else (params, prim, area)
+        self._cells = cells
+
+    def _array(self, i: int) -> np.ndarray:
+        if self._arrays is None:
+            _, Q, area, prim = self._cells[:4]
+            s, e = self.start, self.stop
+            self._arrays = (Q[s:e, :FAMILIES[self.name]].T, prim[s:e], area[s:e])
+        return self._arrays[i]
+
+    params = property(lambda self: self._array(0))
+    prim = property(lambda self: self._array(1))
+    area = property(lambda self: self._array(2))
 
 
-#: Geometry templates of a table's groups -> (their codes (G,), any ring or torus, any
-#: prism) for the compiled kernels, or None when one has no compiled twin.
+def _kernels():
+    """:mod:`artipg.geometry.kernels`, imported on first use (it loads numba); a
+    function-level ``from ... import`` costs more than the small kernels it calls."""
+    k = sys.modules.get("artipg.geometry.kernels")
+    if k is None:
+        import artipg.geometry.kernels as k
+    return k
+
+
+#: Geometry templates of a table's groups -> (their codes (G,), the same as a tuple,
+#: any ring or torus, any prism) for the compiled kernels, or None when one has no
+#: compiled twin.
 _KERNEL_INFO: dict[tuple, tuple | None] = {}
 
 
@@ -125,7 +158,8 @@ def _kernel_info(geoms: tuple) -> tuple | None:
     code = [CODES.get(g) for g in geoms]
     info = None
     if code and None not in code:
-        info = (np.array(code, dtype=np.int64), any(c in ARC_COLUMN for c in code), max(code) >= len(BOX_CODES))
+        info = (np.array(code, dtype=np.int64), tuple(code), any(c in ARC_COLUMN for c in code),
+                max(code) >= len(BOX_CODES))
     if len(_KERNEL_INFO) < 4096:  # template combinations: a few dozen
         _KERNEL_INFO[geoms] = info
     return info
@@ -162,7 +196,7 @@ class PrimitiveTable:
     def __init__(self, geoms: list[type], flat: np.ndarray, start: list[int], foff: list[int], order: np.ndarray,
                  prim_T: np.ndarray, prim_link: np.ndarray, prim_part: np.ndarray, part_semantic: np.ndarray):
         self.groups = [_Group(self, geom, g) for g, geom in enumerate(geoms)]
-        self._cells = None  # (cell areas, cell primitives) when the families give them whole
+        self._geoms = tuple(geoms)
         self._flat = flat
         self._start = start
         self._foff = foff
@@ -230,18 +264,16 @@ class PrimitiveTable:
         """The groups as the compiled kernels (:mod:`artipg.geometry.kernels`) take them:
         (packed parameters (F,), their group offsets (G + 1,), group row offsets
         (G + 1,), global primitive index of each row (N,), template codes (G,), numpy's
-        cos and sin of the packed parameters (F,), :data:`~artipg.geometry.kernels.TRIG`);
-        None when a template has no compiled twin."""
-        info = _kernel_info(tuple(g.geom for g in self.groups))
+        cos and sin of the packed parameters (F,)); None when a template has no
+        compiled twin."""
+        info = _kernel_info(self._geoms)
         if info is None:
             return None
-        from artipg.geometry.kernels import TRIG
-
-        code, arcs, _ = info
+        code, _, arcs, _ = info
         flat = self._flat
         # the arcs of rings and tori are the only parameters whose cos and sin are read
         trig = (np.cos(flat), np.sin(flat)) if arcs else (flat, flat)
-        return (flat, np.array(self._foff), np.array(self._start), self._order, code) + trig + (TRIG,)
+        return (flat, np.array(self._foff), np.array(self._start), self._order, code) + trig
 
     def _compiled_boxes(self) -> bool:
         """Whether local boxes and bounds take the compiled path: once numba is loaded
@@ -250,22 +282,55 @@ class PrimitiveTable:
         return "numba" in sys.modules and self._packed is not None
 
     @cached_property
-    def families(self) -> list[_Family]:
-        """Non-empty patch families in :data:`FAMILIES` order (cells with area > 0)."""
+    def _cells(self) -> tuple:
+        """(family code (K,), parameter rows (K, 15), areas (K,), primitives (K,),
+        running area sums (K,), cells per family (6,) list) of the patch cells, from
+        the compiled kernel, or from :meth:`_plain_families` without one."""
         packed = self._packed
         if packed is None:
-            return self._plain_families()
-        from artipg.geometry.kernels import TABLES, families
+            return self._cells_of(self._plain_families())
+        k = _kernels()
+        start, rows = self._start, k.ROW_CELLS
+        R = sum([rows[c] * (start[g + 1] - start[g]) for g, c in enumerate(_kernel_info(self._geoms)[1])])
+        Q = np.zeros((R, k.Q_WIDTH))
+        area, cdf = np.empty(R), np.empty(R)
+        ints = np.empty((2, R), dtype=np.int64)
+        counts = np.empty(6, dtype=np.int64)
+        K = k.cells(*packed, Q, area, ints[0], ints[1], cdf, counts)
+        return ints[1, :K], Q[:K], area[:K], ints[0, :K], cdf[:K], counts.tolist()
 
-        params, area, prim, counts = families(*packed, *TABLES)
+    @staticmethod
+    def _cells_of(fams: list) -> tuple:
+        """:attr:`_cells` of the families ``fams``."""
+        K = fams[-1].stop if fams else 0
+        code = np.empty(K, dtype=np.int64)
+        Q = np.zeros((K, max(FAMILIES.values())))
+        counts = [0] * len(FAMILIES)
+        for f in fams:
+            c = FAMILY_CODE[f.name]
+            code[f.start:f.stop] = c
+            Q[f.start:f.stop, :len(f.params)] = f.params.T
+            counts[c] = f.stop - f.start
+        if len(fams) == 1:
+            area, prim = fams[0].area, fams[0].prim
+        elif fams:
+            area, prim = np.concatenate([f.area for f in fams]), np.concatenate([f.prim for f in fams])
+        else:
+            area, prim = np.zeros(0), np.zeros(0, dtype=np.int64)
+        return code, Q, area, prim, np.cumsum(area), counts
+
+    @cached_property
+    def families(self) -> list[_Family]:
+        """Non-empty patch families in :data:`FAMILIES` order (cells with area > 0)."""
+        if self._packed is None:
+            return self._plain_families()
+        cells = self._cells
         out = []
         start = 0
-        for name, P, k in zip(FAMILIES, params, counts.tolist()):
+        for name, k in zip(FAMILIES, cells[5]):
             if k:
-                out.append(_Family(name, P, prim[start:start + k], area[start:start + k], start, start + k))
+                out.append(_Family(name, None, None, None, start, start + k, cells))
                 start += k
-        if out:
-            self._cells = (area, prim)
         return out
 
     def _plain_families(self) -> list[_Family]:
@@ -303,39 +368,31 @@ class PrimitiveTable:
             start += K
         return out
 
-    @cached_property
+    @property
     def cell_areas(self) -> np.ndarray:
         """Area (K,) of every patch cell, m^2, in family order."""
-        fams = self.families
-        if self._cells is not None:  # the compiled families return them whole
-            return self._cells[0]
-        return np.concatenate([f.area for f in fams]) if len(fams) != 1 else fams[0].area
+        return self._cells[2]
 
-    @cached_property
+    @property
     def cell_prim(self) -> np.ndarray:
         """Global primitive index (K,) of every patch cell."""
-        fams = self.families
-        if self._cells is not None:
-            return self._cells[1]
-        return np.concatenate([f.prim for f in fams]) if len(fams) != 1 else fams[0].prim
+        return self._cells[3]
 
-    @cached_property
+    @property
     def cell_rows(self) -> tuple[np.ndarray, np.ndarray]:
         """Family code (K,) and parameters (K, 15) of every patch cell, one row per cell
         (zero-padded past the family's parameter count): the draw kernel's layout."""
-        fams = self.families
-        K = fams[-1].stop if fams else 0
-        code = np.empty(K, dtype=np.int64)
-        Q = np.zeros((K, max(FAMILIES.values())))
-        for f in fams:
-            code[f.start:f.stop] = FAMILY_CODE[f.name]
-            Q[f.start:f.stop, :len(f.params)] = f.params.T
-        return code, Q
+        return self._cells[:2]
+
+    @property
+    def cell_cdf(self) -> np.ndarray:
+        """Running sum (K,) of :attr:`cell_areas`, m^2 (``np.cumsum``)."""
+        return self._cells[4]
 
     @cached_property
     def cell_p(self) -> np.ndarray:
         """Multinomial probabilities (K,) of the cells: proportional to area."""
-        a = self.cell_areas
+        a = self._cells[2]
         return a / a.sum()
 
     def part_cell_p(self, parts) -> np.ndarray:
@@ -375,15 +432,18 @@ class PrimitiveTable:
         """Bounding box (N, 2, 3) of every primitive in its own frame, by global index."""
         if not self._compiled_boxes():
             return self._plain_local_boxes()
-        from artipg.geometry.kernels import BOX_CODES, local_boxes
-
-        packed = self._packed
+        k = _kernels()
         out = np.empty((self.n_prims, 2, 3))
-        local_boxes(*packed, out)
-        if _kernel_info(tuple(g.geom for g in self.groups))[2]:  # prisms: bounds_batch needs numpy's cos
-            for g, c in zip(self.groups, packed[4].tolist()):
-                if c >= len(BOX_CODES):
-                    out[g.prim] = g.geom.bounds_batch(g.P)
+        ch = np.empty((2, self.n_prims, 3))
+        k.local_boxes(*self._packed, out, ch)
+        info = _kernel_info(self._geoms)
+        if info[3]:  # prisms: bounds_batch needs numpy's cos
+            for g, c in zip(self.groups, info[1]):
+                if c >= len(k.BOX_CODES):
+                    b = out[g.prim] = g.geom.bounds_batch(g.P)
+                    ch[0, g.prim] = (b[:, 0] + b[:, 1]) * 0.5
+                    ch[1, g.prim] = (b[:, 1] - b[:, 0]) * 0.5
+        self.__dict__["_local_centre_half"] = ch
         return out
 
     def _plain_local_boxes(self) -> np.ndarray:
@@ -406,23 +466,23 @@ class PrimitiveTable:
             b[:, 0].min(axis=0, out=out[0])
             b[:, 1].max(axis=0, out=out[1])
             return out
-        from artipg.geometry.kernels import box_union
-
         # transform_boxes and the union, with its two matrix products left to numpy (BLAS)
         W = self.world_all(link_poses)
         c, h = self._local_centre_half
         R = W[:, :3, :3]
-        box_union(R @ c[:, :, None], np.abs(R) @ h[:, :, None], W, out)
+        _kernels().box_union(R @ c[:, :, None], np.abs(R) @ h[:, :, None], W, out)
         return out
 
     @cached_property
     def _local_centre_half(self) -> np.ndarray:
-        """Centres and half extents (2, N, 3) of :attr:`local_boxes` (compiled path only)."""
-        from artipg.geometry.kernels import centre_half
-
-        out = np.empty((2, self.n_prims, 3))
-        centre_half(self.local_boxes, out)
-        return out
+        """Centres and half extents (2, N, 3) of :attr:`local_boxes` (compiled path only;
+        the compiled :attr:`local_boxes` sets them with the boxes)."""
+        boxes = self.local_boxes
+        ch = self.__dict__.get("_local_centre_half")
+        if ch is None:
+            ch = np.empty((2, self.n_prims, 3))
+            _kernels().centre_half(boxes, ch)
+        return ch
 
 
 @dataclass

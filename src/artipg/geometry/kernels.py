@@ -99,9 +99,17 @@ def _sparse(table: np.ndarray) -> np.ndarray:
     return out
 
 
-#: The constant inputs of :func:`families`, in its argument order.
-TABLES = (_sparse(_BOX_TABLE), _sparse(_RING_TABLE), _sparse(np.concatenate([_RING_SIDES.T, np.zeros((32, 1))], 1)),
-          _sparse(_FRUSTUM_CAPS), _sparse(_RING_CAPS), _prism_trig())
+# the constant tables of the kernels (compiled in)
+_BOX_T = _sparse(_BOX_TABLE)
+_RING_T = _sparse(_RING_TABLE)
+_SIDES_T = _sparse(np.concatenate([_RING_SIDES.T, np.zeros((32, 1))], 1))
+_FCAPS_T = _sparse(_FRUSTUM_CAPS)
+_RCAPS_T = _sparse(_RING_CAPS)
+_PRISM_TRIG = _prism_trig()
+#: Upper bound of the cells of one row of each template (code): buffer sizes of :func:`cells`.
+ROW_CELLS = tuple(int(k) for k in _CELLS.sum(axis=1))
+#: Parameters per cell row (:attr:`artipg.annotate.points.PrimitiveTable.cell_rows`).
+Q_WIDTH = int(_NPARAM.max())
 #: numpy's cos (row 0) and sin (row 1) of 0, the quarter turns that
 #: :func:`artipg.geometry.revolve._arc_bounds_batch` tests, and 2π.
 TRIG = np.ascontiguousarray(np.stack([np.cos(_ANGLES), np.sin(_ANGLES)]))
@@ -129,20 +137,21 @@ def _affine_rows(T, P, out):
 @numba.njit(cache=True)
 def _push(fam, params, area, prim, buf, cnt):
     """Append the cells of a block (``params`` (c, p, M), ``area`` (c, M)) with a positive
-    area to family ``fam``'s buffers, patch by patch and, within one, row by row."""
-    pb, ab, ib = buf[fam]
-    k = cnt[fam]
+    area to family ``fam``'s rows of the cell arrays ``buf`` (:func:`cells`), patch by
+    patch and, within one, row by row."""
+    Q, ab, ib, base = buf
+    k = base[fam] + cnt[fam]
     c, p, M = params.shape
     for i in range(c):
         for m in range(M):
             a = area[i, m]
             if a > 0.0:
                 for j in range(p):
-                    pb[j, k] = params[i, j, m]
+                    Q[k, j] = params[i, j, m]
                 ab[k] = a
                 ib[k] = prim[m]
                 k += 1
-    cnt[fam] = k
+    cnt[fam] = k - base[fam]
 
 
 @numba.njit(cache=True)
@@ -163,8 +172,8 @@ def _poison(P):
 def _push_affine(fam, T, area, P, prim, buf, cnt):
     """:func:`_push` of a block whose parameters are the rows of sparse table ``T``
     (:func:`_sparse`, c p rows) applied to ``P`` (M, q), computed only for the kept cells."""
-    pb, ab, ib = buf[fam]
-    k = cnt[fam]
+    Q, ab, ib, base = buf
+    k = base[fam] + cnt[fam]
     c, M = area.shape
     p = T.shape[0] // c
     nan = _poison(P)
@@ -178,11 +187,11 @@ def _push_affine(fam, T, area, P, prim, buf, cnt):
                     acc += T[r, 2] * P[m, int(T[r, 0])]
                     acc += T[r, 3] * P[m, int(T[r, 1])]
                     acc += nan[m]
-                    pb[j, k] = acc + T[r, 4]
+                    Q[k, j] = acc + T[r, 4]
                 ab[k] = a
                 ib[k] = prim[m]
                 k += 1
-    cnt[fam] = k
+    cnt[fam] = k - base[fam]
 
 
 @numba.njit(cache=True)
@@ -430,9 +439,10 @@ def _rows(flat, foff, start, g):
 
 
 @numba.njit(cache=True)
-def families(flat, foff, start, prim, code, cos_f, sin_f, trig, box_t, ring_t, sides_t, fcaps_t, rcaps_t,
-             prism_trig):
-    """Patch families of an object's primitives, as ``PrimitiveTable.families`` builds them.
+def cells(flat, foff, start, prim, code, cos_f, sin_f, Q, area, cell_prim, cell_code, cdf, counts):
+    """Patch cells of an object's primitives, as ``PrimitiveTable`` builds them from its
+    patch families: the kept cells (area > 0) family by family, in :data:`FAMILIES`
+    order, and within a family in the order of the templates' ``patches``.
 
     Parameters
     ----------
@@ -445,64 +455,79 @@ def families(flat, foff, start, prim, code, cos_f, sin_f, trig, box_t, ring_t, s
     code : (G,) int64
         :data:`CODES` of each group's template.
     cos_f, sin_f : (F,) ndarray
-        numpy's cos and sin of ``flat`` (read for the arcs of rings and tori only, and
-        only those below 2π: the arcs numpy takes the cosines of).
-    trig : (2, 5) ndarray
-        :data:`TRIG`.
-    box_t, ring_t, sides_t, fcaps_t, rcaps_t, prism_trig : ndarray
-        :data:`TABLES`.
+        numpy's cos and sin of ``flat``, read for the arcs of rings and tori only (and
+        only those below 2π: the arcs numpy takes the cosines of); other entries may
+        hold anything.
+    Q : (R, Q_WIDTH) ndarray, zeros
+        Out: each cell's family parameters (zero-padded).
+    area, cdf : (R,) ndarray
+        Out: cell areas (m^2) and their running sum (``np.cumsum``).
+    cell_prim, cell_code : (R,) int64
+        Out: global primitive index and family code of each cell.
+    counts : (6,) int64
+        Out: number of cells of each family.
+
+    The outputs have R >= the sum over rows of :data:`ROW_CELLS` rows; the first K hold
+    the cells.
 
     Returns
     -------
-    params : tuple of six (p, K_f) ndarrays
-        Parameters of the kept cells of each family of :data:`FAMILIES` (K_f may be 0).
-    area : (K,) ndarray
-        Cell areas, m^2, families one after the other.
-    cell_prim : (K,) int64
-        Global primitive index of each cell.
-    counts : (6,) int64
-        K_f.
+    K : int
     """
     G = len(code)
-    kmax = np.zeros(6, dtype=np.int64)
+    base = np.zeros(6, dtype=np.int64)  # each family fills its own rows, then they close up
     for g in range(G):
         M = start[g + 1] - start[g]
-        for f in range(6):
-            kmax[f] += _CELLS[code[g], f] * M
-    buf = [(np.empty((_NPARAM[f], kmax[f])), np.empty(kmax[f]), np.empty(kmax[f], dtype=np.int64))
-           for f in range(6)]
-    cnt = np.zeros(6, dtype=np.int64)
+        for f in range(5):
+            base[f + 1] += _CELLS[code[g], f] * M
+    for f in range(5):
+        base[f + 1] += base[f]
+    rows = base[5]
+    for g in range(G):
+        rows += _CELLS[code[g], 5] * (start[g + 1] - start[g])
+    if rows > len(area):
+        raise ValueError("cell arrays too short")
+    buf = (Q, area, cell_prim, base)
+    counts[:] = 0
     for g in range(G):
         s, e = start[g], start[g + 1]
         P, pr, c = _rows(flat, foff, start, g), prim[s:e], code[g]
         if c == 0:
-            _cuboid(P, pr, box_t, buf, cnt)
+            _cuboid(P, pr, _BOX_T, buf, counts)
         elif c == 1:
-            _rect_ring(P, pr, ring_t, sides_t, buf, cnt)
+            _rect_ring(P, pr, _RING_T, _SIDES_T, buf, counts)
         elif c == 2:
-            _frustum(P, pr, fcaps_t, buf, cnt)
+            _frustum(P, pr, _FCAPS_T, buf, counts)
         elif c == 3:
-            _ring(P, pr, _rows(cos_f, foff, start, g), _rows(sin_f, foff, start, g), trig, rcaps_t, buf, cnt)
+            _ring(P, pr, _rows(cos_f, foff, start, g), _rows(sin_f, foff, start, g), TRIG, _RCAPS_T, buf, counts)
         elif c == 4:
-            _sphere(P, pr, buf, cnt)
+            _sphere(P, pr, buf, counts)
         elif c == 5:
-            _torus(P, pr, _rows(cos_f, foff, start, g), _rows(sin_f, foff, start, g), trig, buf, cnt)
+            _torus(P, pr, _rows(cos_f, foff, start, g), _rows(sin_f, foff, start, g), TRIG, buf, counts)
         elif c == 6:
-            _prism(P, pr, prism_trig, buf, cnt)
+            _prism(P, pr, _PRISM_TRIG, buf, counts)
         else:
-            _tri_prism(P, pr, buf, cnt)
-    K = cnt.sum()
-    area = np.empty(K)
-    cell_prim = np.empty(K, dtype=np.int64)
+            _tri_prism(P, pr, buf, counts)
     o = 0
+    width = Q.shape[1]
     for f in range(6):
-        k = cnt[f]
-        area[o:o + k] = buf[f][1][:k]
-        cell_prim[o:o + k] = buf[f][2][:k]
+        b, k = base[f], counts[f]
+        if b != o:  # to earlier rows only: whole rows move, with their zero padding
+            for r in range(k):
+                for j in range(width):
+                    Q[o + r, j] = Q[b + r, j]
+                area[o + r] = area[b + r]
+                cell_prim[o + r] = cell_prim[b + r]
+        for r in range(o, o + k):
+            cell_code[r] = f
         o += k
-    params = (buf[0][0][:, :cnt[0]].copy(), buf[1][0][:, :cnt[1]].copy(), buf[2][0][:, :cnt[2]].copy(),
-              buf[3][0][:, :cnt[3]].copy(), buf[4][0][:, :cnt[4]].copy(), buf[5][0][:, :cnt[5]].copy())
-    return params, area, cell_prim, cnt
+    if o:
+        acc = area[0]
+        cdf[0] = acc
+        for r in range(1, o):
+            acc = acc + area[r]
+            cdf[r] = acc
+    return o
 
 
 # ---------------------------------------------------------------- local boxes
@@ -552,10 +577,11 @@ def _arc_trig(C, S, trig, m, col, arc):
 
 
 @numba.njit(cache=True)
-def local_boxes(flat, foff, start, prim, code, cos_f, sin_f, trig, out):
+def local_boxes(flat, foff, start, prim, code, cos_f, sin_f, out, ch):
     """Write the local box (2, 3) of every primitive of the groups whose template is in
-    :data:`BOX_CODES` to ``out[prim]`` (N, 2, 3): the values of their ``bounds_batch``.
-    Arguments as for :func:`families`."""
+    :data:`BOX_CODES` to ``out[prim]`` (N, 2, 3), the values of their ``bounds_batch``,
+    and its centre and half extents to ``ch[0, prim]``, ``ch[1, prim]`` ((2, N, 3), as
+    :func:`centre_half`). Arguments as for :func:`cells`."""
     for g in range(len(code)):
         s, e, c = start[g], start[g + 1], code[g]
         if c >= len(BOX_CODES):  # the prisms (last codes)
@@ -569,7 +595,8 @@ def local_boxes(flat, foff, start, prim, code, cos_f, sin_f, trig, out):
             for m in range(e - s):
                 full = full and P[m, col] >= _FULL_TURN
         for m in range(e - s):
-            p, b = P[m], out[prim[s + m]]
+            i = prim[s + m]
+            p, b = P[m], out[i]
             if c == 0 or c == 1:
                 for k in range(3):
                     b[1, k] = p[k] * 0.5
@@ -586,8 +613,8 @@ def local_boxes(flat, foff, start, prim, code, cos_f, sin_f, trig, out):
                     _turn_box(b, r_hi, -h / 2, h / 2)
                 else:
                     r_lo = _min(ri, ri + tp)
-                    ca, sa = _arc_trig(C, S, trig, m, 3, arc)
-                    _arc_box(b, r_lo, r_hi, arc, ca, sa, trig, -h / 2, h / 2)
+                    ca, sa = _arc_trig(C, S, TRIG, m, 3, arc)
+                    _arc_box(b, r_lo, r_hi, arc, ca, sa, TRIG, -h / 2, h / 2)
             elif c == 4:
                 R, lo, hi = p[0], p[1], p[2]
                 if lo <= 0 and hi >= 0:
@@ -601,8 +628,11 @@ def local_boxes(flat, foff, start, prim, code, cos_f, sin_f, trig, out):
                 if full:
                     _turn_box(b, R + r, -r, r)
                 else:
-                    ca, sa = _arc_trig(C, S, trig, m, 2, arc)
-                    _arc_box(b, R - r, R + r, arc, ca, sa, trig, -r, r)
+                    ca, sa = _arc_trig(C, S, TRIG, m, 2, arc)
+                    _arc_box(b, R - r, R + r, arc, ca, sa, TRIG, -r, r)
+            for k in range(3):
+                ch[0, i, k] = (b[0, k] + b[1, k]) * 0.5
+                ch[1, i, k] = (b[1, k] - b[0, k]) * 0.5
 
 
 @numba.njit(cache=True)

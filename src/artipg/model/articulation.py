@@ -148,12 +148,13 @@ class ArticulatedObject:
     def _levels(self) -> list[tuple]:
         """The non-root links by depth: (links, parent, joint indices, link indices) per
         level, the first three slices or one parent's index when they can be, else arrays."""
-        idx = self.link_index
         links = self.links
-        parent = [idx[lk.joint.parent] for lk in links[1:]]
-        n = len(parent)
-        if not any(parent):  # every link on the root: one level
+        n = len(links) - 1
+        parents = [lk.joint.parent for lk in links[1:]]
+        if parents.count(links[0].name) == n:  # every link on the root: one level
             return [(slice(1, n + 1), 0, slice(0, n), range(1, n + 1))] if n else []
+        idx = self.link_index
+        parent = [idx[p] for p in parents]
         depth = [0] * (n + 1)
         for i, p in enumerate(parent, 1):
             if p >= i:

@@ -127,17 +127,17 @@ class ObjectBuilder:
         obj = ArticulatedObject(category, subcategory, seed, links, [lk.joint for lk in links[1:]],
                                 params or {}, templates or {})
         if normalize:
-            b = obj.bounds()
-            c = (b[0] + b[1]) / 2.0
-            S = translation(-c[0], -c[1], -b[0, 2])
+            (x0, y0, z0), (x1, y1, z1) = obj.bounds().tolist()
+            S = translation(-((x0 + x1) / 2.0), -((y0 + y1) / 2.0), -z0)
             root = links[0]
-            # one stacked product each (the same 4x4 products); the poses become its slices
-            if root.parts:
-                for part, T in zip(root.parts, S @ _stack([part.pose for part in root.parts])):
-                    part.pose = T
             kids = [j for j in obj.joints if j.parent == root.name]
-            if kids:
-                for j, T in zip(kids, S @ _stack([j.origin for j in kids])):
+            # one stacked product (the same 4x4 products); the poses become its slices
+            n = len(root.parts)
+            if n or kids:
+                moved = S @ _stack([part.pose for part in root.parts] + [j.origin for j in kids])
+                for part, T in zip(root.parts, moved):
+                    part.pose = T
+                for j, T in zip(kids, moved[n:]):
                     j.origin = T
             obj.primitive_table.shift_root(S)
         return obj
