@@ -16,7 +16,6 @@ from itertools import chain
 
 import numpy as np
 
-from artipg.geometry.base import TWO_PI
 from artipg.geometry.patches import FAMILIES, place_family
 from artipg.rules.streams import streams
 from artipg.vocabulary import SEMANTIC_LABELS, label_id
@@ -100,7 +99,7 @@ class _Group:
 
 class _Family:
     """The patches of one family over the whole object: the cells ``start:stop`` of
-    the multinomial draw.
+    the point draw.
 
     Attributes
     ----------
@@ -391,7 +390,7 @@ class PrimitiveTable:
 
     @cached_property
     def cell_p(self) -> np.ndarray:
-        """Multinomial probabilities (K,) of the cells: proportional to area."""
+        """Probabilities (K,) of the cells: proportional to area."""
         a = self._cells[2]
         return a / a.sum()
 
