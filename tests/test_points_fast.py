@@ -313,35 +313,11 @@ def test_block_and_linear_helpers_match_their_plain_versions():
 # ---------------------------------------------------------------- samplers
 
 def _plain_sampler(family, q, rng):
-    """The family samplers as first written (stacked outputs)."""
-    if family in ("rect", "tri", "sector"):
+    """The family samplers as first written: two uniforms per point then the plain
+    placement, except for the torus, whose tube angle is drawn by rejection."""
+    if family != "torus":
         u, v = rng.random((2, q.shape[1]))
-        if family == "tri":
-            flip = u + v > 1.0
-            u, v = np.where(flip, 1.0 - u, u), np.where(flip, 1.0 - v, v)
-        elif family == "sector":
-            r0, r1, arc = q[12], q[13], q[14]
-            rho = np.sqrt(r0 * r0 + u * (r1 * r1 - r0 * r0))
-            phi = v * arc
-            u, v = rho * np.cos(phi), rho * np.sin(phi)
-        out = np.empty((6, q.shape[1]))
-        out[0:3] = q[0:3] + u * q[3:6] + v * q[6:9]
-        out[3:6] = q[9:12]
-        return out
-    if family == "band":
-        u, t = rng.random((2, q.shape[1]))
-        r0, r1, z0, z1, arc, nr, nz = q
-        rho = np.sqrt(r0 * r0 + u * (r1 * r1 - r0 * r0))
-        s = u * (r0 + r1) / (rho + r0 + 1e-300)
-        c, d = np.cos(t * arc), np.sin(t * arc)
-        return np.stack([rho * c, rho * d, z0 + s * (z1 - z0), nr * c, nr * d, nz])
-    if family == "zone":
-        u, t = rng.random((2, q.shape[1]))
-        R, z0, z1 = q
-        z = z0 + u * (z1 - z0)
-        rho = np.sqrt(np.maximum(R * R - z * z, 0.0))
-        c, d = np.cos(t * TWO_PI), np.sin(t * TWO_PI)
-        return np.stack([rho * c, rho * d, z, rho * c / R, rho * d / R, z / R])
+        return _plain_place(family, q, u, v)
     R, r, arc = q
     v = torus_tube_angles(R, r, rng)  # the rejection step is shared; the assembly is under test
     th = rng.random(len(R)) * arc
