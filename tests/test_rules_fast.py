@@ -227,16 +227,21 @@ def test_region_and_grasp_init_as_the_generated_dataclass_init():
 
 
 def test_generated_objects_are_freed_without_the_cyclic_collector():
-    # the link builders refer to their builder weakly: no reference cycle keeps a
-    # dropped object's parts (and its parameter record) alive until a collection
+    # the link builders refer to their builder weakly and the primitive table's groups
+    # hold its arrays, not the table: no reference cycle keeps a dropped object's parts,
+    # parameter record or table alive until a collection
     enabled = gc.isenabled()
     gc.disable()
     try:
         for c in artipg.categories():
             obj = artipg.generate(c, 2)
+            obj.sample_points(64)
+            obj.primitive_table.groups[0].P  # the groups' views of the table's arrays
             parts = [weakref.ref(p) for p in obj.parts]
+            table = weakref.ref(obj.primitive_table)  # its groups must not refer back to it
             del obj
             assert all(r() is None for r in parts), c
+            assert table() is None, c
     finally:
         if enabled:
             gc.enable()

@@ -13,6 +13,7 @@ import sys
 from dataclasses import dataclass
 from functools import cached_property
 from itertools import chain
+from typing import NamedTuple
 
 import numpy as np
 
@@ -41,6 +42,19 @@ def transform_boxes(boxes: np.ndarray, W: np.ndarray) -> np.ndarray:
     return out
 
 
+class _Rows(NamedTuple):
+    """The arrays of a :class:`PrimitiveTable` that its groups read (the same objects;
+    ``prim_T`` is changed in place only)."""
+
+    flat: np.ndarray
+    start: list
+    foff: list
+    order: np.ndarray
+    prim_T: np.ndarray
+    prim_link: np.ndarray
+    prim_part: np.ndarray
+
+
 class _Group:
     """The primitives of one geometry template (rows in global primitive order).
 
@@ -58,34 +72,36 @@ class _Group:
         Link index and part index (instance id).
     """
 
-    def __init__(self, table: "PrimitiveTable", geom: type, index: int):
-        self._table = table
+    def __init__(self, table: "_Rows", geom: type, index: int):
+        # the table's arrays, not the table: the table holds its groups, and a reference
+        # back would make every table a cycle that only the cyclic GC frees
+        self._rows = table
         self.geom = geom
         self._index = index
 
     @cached_property
     def P(self) -> np.ndarray:
-        t, g = self._table, self._index
-        M = t._start[g + 1] - t._start[g]
-        a, b = t._foff[g], t._foff[g + 1]
-        return t._flat[a:b].reshape(M, (b - a) // M)
+        t, g = self._rows, self._index
+        M = t.start[g + 1] - t.start[g]
+        a, b = t.foff[g], t.foff[g + 1]
+        return t.flat[a:b].reshape(M, (b - a) // M)
 
     @cached_property
     def prim(self) -> np.ndarray:
-        t, g = self._table, self._index
-        return t._order[t._start[g]:t._start[g + 1]]
+        t, g = self._rows, self._index
+        return t.order[t.start[g]:t.start[g + 1]]
 
     @cached_property
     def T(self) -> np.ndarray:
-        return self._table.prim_T[self.prim]
+        return self._rows.prim_T[self.prim]
 
     @cached_property
     def link(self) -> np.ndarray:
-        return self._table.prim_link[self.prim]
+        return self._rows.prim_link[self.prim]
 
     @cached_property
     def part(self) -> np.ndarray:
-        return self._table.prim_part[self.prim]
+        return self._rows.prim_part[self.prim]
 
     @cached_property
     def comp_area(self) -> np.ndarray:
@@ -194,7 +210,8 @@ class PrimitiveTable:
 
     def __init__(self, geoms: list[type], flat: np.ndarray, start: list[int], foff: list[int], order: np.ndarray,
                  prim_T: np.ndarray, prim_link: np.ndarray, prim_part: np.ndarray, part_semantic: np.ndarray):
-        self.groups = [_Group(self, geom, g) for g, geom in enumerate(geoms)]
+        rows = _Rows(flat, start, foff, order, prim_T, prim_link, prim_part)
+        self.groups = [_Group(rows, geom, g) for g, geom in enumerate(geoms)]
         self._geoms = tuple(geoms)
         self._flat = flat
         self._start = start
