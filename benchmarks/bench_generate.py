@@ -4,6 +4,10 @@ Prints, per category, the median milliseconds per object for
 (a) ``artipg.generate``, (b) generate + 2048 labelled points, (c) a full export to
 disk (URDF, meshes, semantics, annotation, points), and the objects/second of
 ``artipg generate -n N --workers 2`` end to end (CLI, process pool, disk).
+It also times the issue's yardstick, a plain numpy loop that builds a 13-box cabinet and
+samples 2048 labelled points (``reference_cabinet.py``), before and after the categories,
+and prints each category's (b) as a multiple of it: on a shared machine whose speed
+drifts by 10-20 % the ratio moves less than the milliseconds.
 (b) is split into where its time goes: the patch table of the object (built once per
 object, cached) and the draw of 2048 points from it; the rest is (a).
 
@@ -24,6 +28,9 @@ import numpy as np
 
 import artipg
 from artipg.export.folder import export_object
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from reference_cabinet import reference_object  # noqa: E402
 
 
 CLOCK = time.perf_counter
@@ -55,7 +62,11 @@ def main() -> None:
     tmp = tempfile.mkdtemp(prefix="artipg-bench-")
     print(f"artipg {artipg.__version__}, {len(cats)} categories, medians over {args.seeds} seeds "
           f"({args.export_seeds} for export), one process, {args.clock} clock")
-    print(f"{'category':<20}{'(a) gen ms':>12}{'(b) +2048 pts ms':>18}{'patches':>9}{'draw':>7}"
+    for s in range(5):
+        reference_object(s)
+    ref = [_median_ms(reference_object, seeds)]
+    print(f"reference (plain numpy 13-box cabinet + 2048 labelled points): {ref[0]:.3f} ms")
+    print(f"{'category':<20}{'(a) gen ms':>12}{'(b) +2048 pts ms':>18}{'(b)/ref':>8}{'patches':>9}{'draw':>7}"
           f"{'(c) export ms':>15}{'joints mean/median/max':>26}")
     worst_b = 0.0
     all_dof = []
@@ -73,8 +84,10 @@ def main() -> None:
         all_dof.append(dof)
         worst_b = max(worst_b, b)
         joints = f"{dof.mean():.1f} / {np.median(dof):.0f} / {dof.max()}"
-        print(f"{c:<20}{a:>12.3f}{b:>18.3f}{patches:>9.3f}{draw:>7.3f}{e:>15.1f}{joints:>26}")
-    print(f"worst median (b): {worst_b:.3f} ms per object")
+        print(f"{c:<20}{a:>12.3f}{b:>18.3f}{b / ref[0]:>8.2f}{patches:>9.3f}{draw:>7.3f}{e:>15.1f}{joints:>26}")
+    ref.append(_median_ms(reference_object, seeds))
+    print(f"worst median (b): {worst_b:.3f} ms per object; reference {ref[0]:.3f} ms before the "
+          f"categories, {ref[1]:.3f} ms after")
     dof = np.concatenate(all_dof)
     print(f"movable joints over all categories: mean {dof.mean():.2f}, median {np.median(dof):.0f}, "
           f"{100 * (dof >= 10).mean():.1f}% of objects with 10 or more")
