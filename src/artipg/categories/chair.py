@@ -21,7 +21,6 @@ round. Sizes (metres): seat height 0.42-0.5 (office, lowest), 0.6-0.8 (bar stool
 
 from __future__ import annotations
 
-import copy
 import math
 
 import numpy as np
@@ -38,6 +37,15 @@ from artipg.templates.supports import round_legs, square_legs, tapered_legs
 
 LEGS = {square_legs: 1.0, round_legs: 1.0, tapered_legs: 1.0}
 STAR_ARMS = {5: 8.0, 4: 1.0, 6: 1.0}  # office chair bases: nearly always five casters
+_new = object.__new__
+
+
+def _clone(part: Part) -> Part:
+    """``copy.copy(part)`` (a shallow copy: template knowledge shared, name, pose and
+    parameter span set when added) without the copy protocol's reduce round trip."""
+    c = _new(Part)
+    c.__dict__.update(part.__dict__)
+    return c
 
 
 def _box(lo, hi, role="frame"):
@@ -67,14 +75,15 @@ def _office(ctx):
     star = star_base(p.scope("star"), reach, n, ah)
     root.add(star, translation(0, 0, z_arm))
     tyre = wheel(p.scope("wheel"), rw, ww)  # one caster and one wheel design, copied
+    axles = [translation(za[0], y, za[2]) for y in ((y0,) if y0 == y1 else (y0, y1))]  # the same in every fork
     for T in turns(n) @ translation(reach, 0, z_arm):
         fork = ctx.builder.create_link("caster", root)
         fork.set_joint("continuous", T)
-        fork.add(copy.copy(caster))
-        for y in ((y0,) if y0 == y1 else (y0, y1)):
+        fork.add(_clone(caster))
+        for A in axles:
             wl = ctx.builder.create_link("wheel", fork)
-            wl.set_joint("continuous", translation(za[0], y, za[2]), axis=(0, 1, 0))
-            wl.add(copy.copy(tyre))
+            wl.set_joint("continuous", A.copy(), axis=(0, 1, 0))
+            wl.add(_clone(tyre))
     sd, sw = p.uniform("seat_depth", 0.42, 0.5), p.uniform("seat_width", 0.44, 0.52)
     seat = ctx.choose("seat", SEATS)(p.scope("seat"), sd, sw)
     st = seat.anchor("top")[2]
