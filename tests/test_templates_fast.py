@@ -187,3 +187,27 @@ def test_keypad_copies_are_dataclass_replacements():
             assert got is not part
             for f in fields(part):
                 assert getattr(got, f.name) is getattr(want, f.name), f.name
+
+
+def test_span_of_turned_curved_primitives_is_their_bounds():
+    from artipg.geometry import cuboid, cylinder, frustum, prism, rect_ring, ring, sphere, torus
+    from artipg.geometry.transforms import rot_x, rot_y, rot_z, translation
+
+    rng = np.random.default_rng(7)
+    # axis permutations and half turns (single non-zero entries, some -1), and a few
+    # general rotations (the plain path)
+    turns = [np.eye(4), rot_x(np.pi / 2), rot_y(np.pi / 2), rot_z(np.pi / 2), rot_x(np.pi), rot_y(-np.pi / 2),
+             rot_z(np.pi) @ rot_x(np.pi / 2), rot_y(0.3), rot_x(1.1) @ rot_z(0.4)]
+    for _ in range(300):
+        a, b, c = rng.uniform(0.005, 0.2, 3)
+        lo, hi = np.sort(rng.uniform(-a, a, 2))
+        prims = [cuboid(a, b, c), cylinder(a, b), frustum(a, b, c), frustum(a, 0.0, c), ring(a + b, a, c),
+                 ring(a + b, a, c, rng.uniform(0.2, 6.0), taper=rng.uniform(-0.5, 0.5) * a),
+                 torus(a + b, min(a, b) / 2), torus(a + b, min(a, b) / 2, rng.uniform(0.2, 6.0)),
+                 sphere(a), sphere(a, lo, hi), sphere(a, abs(lo), a), prism(a, b, 6), rect_ring(a, b, c, a / 2, b / 2)]
+        for pr in prims:
+            for R in turns:
+                T = translation(*rng.uniform(-0.5, 0.5, 3)) @ R
+                placed = pr.placed(T)
+                for axis in range(3):
+                    assert np.array(span([placed], axis)).tobytes() == placed.bounds()[:, axis].tobytes()

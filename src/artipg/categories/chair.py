@@ -21,7 +21,6 @@ round. Sizes (metres): seat height 0.42-0.5 (office, lowest), 0.6-0.8 (bar stool
 
 from __future__ import annotations
 
-import copy
 import math
 
 import numpy as np
@@ -38,6 +37,15 @@ from artipg.templates.supports import round_legs, square_legs, tapered_legs
 
 LEGS = {square_legs: 1.0, round_legs: 1.0, tapered_legs: 1.0}
 STAR_ARMS = {5: 8.0, 4: 1.0, 6: 1.0}  # office chair bases: nearly always five casters
+_new = object.__new__
+
+
+def _clone(part: Part) -> Part:
+    """``copy.copy(part)`` (a shallow copy: template knowledge shared, name, pose and
+    parameter span set when added) without the copy protocol's reduce round trip."""
+    c = _new(Part)
+    c.__dict__.update(part.__dict__)
+    return c
 
 
 def _box(lo, hi, role="frame"):
@@ -61,25 +69,26 @@ def _office(ctx):
     ww = p.uniform("wheel_width", 0.014, 0.022)
     ah = p.uniform("arm_height", 0.03, 0.045)
     caster = ctx.choose("caster", CASTERS)(p.scope("caster"), rw, ww)
-    za, (y0, y1, _) = caster.anchor("axle"), caster.anchor("wheel_y")
+    za, (y0, y1, _) = caster.anchors["axle"], caster.anchors["wheel_y"]
     z_arm = rw - za[2]
     root = ctx.builder.create_link("base")
     star = star_base(p.scope("star"), reach, n, ah)
     root.add(star, translation(0, 0, z_arm))
     tyre = wheel(p.scope("wheel"), rw, ww)  # one caster and one wheel design, copied
+    axles = [translation(za[0], y, za[2]) for y in ((y0,) if y0 == y1 else (y0, y1))]  # the same in every fork
     for T in turns(n) @ translation(reach, 0, z_arm):
         fork = ctx.builder.create_link("caster", root)
         fork.set_joint("continuous", T)
-        fork.add(copy.copy(caster))
-        for y in ((y0,) if y0 == y1 else (y0, y1)):
+        fork.add(_clone(caster))
+        for A in axles:
             wl = ctx.builder.create_link("wheel", fork)
-            wl.set_joint("continuous", translation(za[0], y, za[2]), axis=(0, 1, 0))
-            wl.add(copy.copy(tyre))
+            wl.set_joint("continuous", A.copy(), axis=(0, 1, 0))
+            wl.add(_clone(tyre))
     sd, sw = p.uniform("seat_depth", 0.42, 0.5), p.uniform("seat_width", 0.44, 0.52)
     seat = ctx.choose("seat", SEATS)(p.scope("seat"), sd, sw)
-    st = seat.anchor("top")[2]
+    st = seat.anchors["top"][2]
     mh, mw = p.uniform("mech_height", 0.04, 0.06), p.uniform("mech_width", 0.16, 0.24)
-    hub_top = z_arm + star.anchor("hub_top")[2]
+    hub_top = z_arm + star.anchors["hub_top"][2]
     travel = p.uniform("lift", 0.06, 0.11)
     z_pt = p.uniform("seat_height", 0.42, 0.5) - st - mh
     z_t = max(min(hub_top + p.uniform("tube_length", 0.12, 0.2), z_pt - 0.03), hub_top + travel + 0.03)
@@ -137,14 +146,14 @@ def _stool(ctx):
     gas = p.flag("gas_lift", 0.45)
     bh = p.uniform("bearing", 0.04, 0.06) if gas else p.uniform("bearing", 0.015, 0.03)
     br = p.uniform("bearing_radius", 0.06, 0.1)
-    z_sw = hs - seat.anchor("top")[2] - bh
+    z_sw = hs - seat.anchors["top"][2] - bh
     root = ctx.builder.create_link("base")
     parent, origin = root, translation(0, 0, z_sw)
     if gas or p.flag("column", 0.6):
         base = column_stool_base(p.scope("base"), z_sw, gas)
         root.add(base)
         if gas:  # the piston slides in the tube's bore
-            r, _, z0 = base.anchor("bore")
+            r, _, z0 = base.anchors["bore"]
             parent = ctx.builder.create_link("column", root)
             parent.set_joint("prismatic", origin, axis=(0, 0, 1), limits=(0.0, p.uniform("lift", 0.08, 0.15)))
             L = z_sw - z0 - 0.005
@@ -162,7 +171,7 @@ def _stool(ctx):
     if gas:
         _lever(ctx, sl, p.scope("lever"), 0.0, -br, 0.02, bh - 0.02)
     if p.flag("back", 0.4):
-        sl.add(ring_back(p.scope("back"), 0.47 * d, bh, bh + seat.anchor("top")[2]))
+        sl.add(ring_back(p.scope("back"), 0.47 * d, bh, bh + seat.anchors["top"][2]))
     return {}
 
 
@@ -175,11 +184,11 @@ def _folding(ctx):
     root = ctx.builder.create_link("base")
     root.add(frame)
     seat = ctx.builder.create_link("seat", root)  # flips up about its rear edge, staying in front of it
-    seat.set_joint("revolute", translation(*frame.anchor("seat_pivot")), axis=(0, 1, 0),
+    seat.set_joint("revolute", translation(*frame.anchors["seat_pivot"]), axis=(0, 1, 0),
                    limits=(0.0, p.uniform("seat_fold", 1.35, 1.5)))
     seat.add(Part("seat", "folding_seat", [_box((-sd, -sw / 2, -st), (0.0, sw / 2, 0.0), "cushion")],
                   regions={"lift": Region(("cushion",))}))
-    q, fx = frame.anchor("leg_pivot"), frame.anchor("front_foot")[0]
+    q, fx = frame.anchors["leg_pivot"], frame.anchors["front_foot"][0]
     u = np.array([p.uniform("rear_foot", 0.05, 0.15) - q[0], -q[2]])  # pivot -> rear foot
     # all four feet on the floor: the rear legs (square tubes cut square to their axis)
     # reach down with a corner as far as the front tubes (cut square too) with their rim
@@ -188,7 +197,7 @@ def _folding(ctx):
         u[1] = -q[2] + rp * abs(math.sin(math.atan2(u[0], u[1]))) - drop
     v = np.array([fx - q[0], -q[2]])  # pivot -> front foot
     legs = folding_rear_legs(p.scope("rear"), u, sw / 2 + 3 * rp, rp)  # outside the tubes and their plates
-    lc, rc, _ = legs.anchor("crossbar")
+    lc, rc, _ = legs.anchors["crossbar"]
     alpha = math.acos(float(u @ v) / float(np.hypot(*u)) / float(np.hypot(*v)))
     rear = ctx.builder.create_link("leg", root)  # folds forward until the crossbar nears the front tubes
     rear.set_joint("revolute", translation(*q), axis=(0, 1, 0), limits=(0.0, alpha - math.asin((rc + rp + 0.004) / lc)))
@@ -201,7 +210,7 @@ def _four_leg(ctx):
     hs, sd = p.uniform("seat_height", 0.42, 0.48), p.uniform("seat_depth", 0.4, 0.5)
     sw = p.uniform("seat_width", 0.4, 0.5)
     seat = ctx.choose("seat", SEATS)(p.scope("seat"), sd, sw)
-    st = seat.anchor("top")[2]
+    st = seat.anchors["top"][2]
     root = ctx.builder.create_link("base")
     root.add(ctx.choose("legs", LEGS)(p.scope("legs"), sd, sw, hs - st))
     root.add(seat, translation(0, 0, hs - st))

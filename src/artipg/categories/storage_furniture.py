@@ -56,6 +56,16 @@ def body(ctx):
     return root, part, pose
 
 
+def _lifted(zb: float, x: float, y: float, z: float):
+    """``translation(0, 0, zb) @ translation(x, y, z)`` (4, 4), without the product.
+
+    Each entry of the product's last column sums one non-zero term (x, y) or two
+    (z and zb): any summation order rounds it once, as ``z + zb`` does; a product's
+    sums start at +0.0 (see :class:`artipg.geometry.transforms.Placer`), so a zero
+    comes out +0.0, as ``x + 0.0`` makes it."""
+    return translation(x + 0.0, y + 0.0, z + zb)
+
+
 def _stile(part) -> float:
     """Width of a framed panel's stile (its frame's side band), or inf for a slab:
     a handle on a framed door must sit on the stile, not on the recessed centre."""
@@ -87,6 +97,7 @@ def fronts(ctx):
     W, H, D = hi[1] - lo[1], hi[2] - lo[2], hi[0] - lo[0]
     wall = float(part.primitives[1].params[1])  # side panel thickness
     front_x = lo[0]
+    zb = float(pose[2, 3])  # the carcass is only lifted: fronts are placed by _lifted(zb, ...)
     nc = p.integers("columns", *cols)
     ybs = _split(p, "col_w", lo[1], W, nc)
     gap = p.uniform("gap", 0.002, 0.004)
@@ -122,7 +133,7 @@ def fronts(ctx):
                 tmpl = ctx.choose(f"{cell}.drawer_template", DRAWERS)
                 opening = (iy0 - centre[0], iy1 - centre[0], iz0 - centre[1], iz1 - centre[1])
                 dr = tmpl(q, size[0], size[1], D - 0.01, opening=opening)
-                link = mount_sliding(ctx.builder, root, dr, origin=pose @ translation(front_x, *centre),
+                link = mount_sliding(ctx.builder, root, dr, origin=_lifted(zb, front_x, *centre),
                                      limits=(0.0, q.uniform("travel", 0.6, 0.85) * (D - 0.01)), name="drawer")
                 if "pull" not in dr.regions:
                     h = ctx.choose(f"{cell}.handle_template", handles)(q.scope("handle"), length=min(0.5 * size[0], 0.35))
@@ -132,7 +143,7 @@ def fronts(ctx):
                 # the shelf spans the cell between its walls and rests against the back
                 sy0, sy1 = y0 + (wall / 2 if c else 0.0), y1 - (wall / 2 if c < nc - 1 else 0.0)
                 root.add(shelf_board(q, sy1 - sy0, D - 0.005, wall),
-                         pose @ translation(hi[0] - (D - 0.005) / 2, (sy0 + sy1) / 2, (z0 + z1) / 2))
+                         _lifted(zb, hi[0] - (D - 0.005) / 2, (sy0 + sy1) / 2, (z0 + z1) / 2))
             double = size[0] > 0.55 and q.flag("double", 0.8)
             sides = ("+y", "-y") if double else (q.choice("hinge", ("+y", "-y")),)
             w = size[0] / len(sides) - (gap / 2 if double else 0.0)

@@ -7,12 +7,44 @@ extent along one axis (how high an arm rises, how far a lever reaches) calls
 entry (the pose maps one local axis onto the asked one, scaled or not: every axis
 permutation, and the axis of a rotation about it), the corner transform reduces to
 one product and one sum per corner, made here in the same order, so the result is
-the same float; other primitives use their bounds.
+the same float; other primitives use their bounds. The local box's entry along that
+axis is written out for the templates whose entry is a plain expression of their
+parameters (a torus arc's box, say, takes a dozen numpy calls for its x-y extent,
+which a span along its axis does not need).
 """
 
 from __future__ import annotations
 
-from artipg.geometry import Cuboid
+import math
+
+from artipg.geometry import Cuboid, Frustum, Ring, Sphere, Torus
+
+
+def _local(geom, params, k: int):
+    """(lo, hi) of ``geom.bounds(params)[:, k]`` (the local box along local axis ``k``),
+    the same floats, made in Python where the entry is a plain expression of the
+    parameters (the curved templates' boxes are numpy arrays, an arc's made from
+    candidate points); None elsewhere."""
+    if geom is Cuboid:
+        b1 = params[k] / 2
+        return -b1, b1
+    if geom is Frustum:  # ±max(r0, r1) across, ±h/2 along z
+        if k == 2:
+            return -params[2] / 2, params[2] / 2
+        r = max(params[0], params[1])
+        return -r, r
+    if geom is Sphere:  # a segment lo <= z <= hi of a sphere of radius R
+        R, zlo, zhi = params
+        if k == 2:
+            return zlo, zhi
+        r = R if zlo <= 0.0 <= zhi else math.sqrt(max(R * R - min(zlo * zlo, zhi * zhi), 0.0))
+        return -r, r
+    if k == 2:  # the axial extent of rings and tori
+        if geom is Torus:
+            return -params[1], params[1]
+        if geom is Ring:
+            return -params[2] / 2, params[2] / 2
+    return None
 
 
 def span(prims, axis: int) -> tuple[float, float]:
@@ -21,16 +53,18 @@ def span(prims, axis: int) -> tuple[float, float]:
     ``part.bounds()[:, axis]``."""
     lo = hi = None
     for prim in prims:
-        row = prim.pose[axis].tolist()
-        nonzero = [k for k in range(3) if row[k] != 0.0]
-        if len(nonzero) == 1:
-            k = nonzero[0]
-            if prim.geom is Cuboid:
-                b1 = prim.params[k] / 2
-                b0 = -b1
-            else:
-                b0, b1 = prim.geom.bounds(prim.params)[:, k].tolist()
-            r, t = row[k], row[3]
+        r0, r1, r2, t = prim.pose[axis].tolist()
+        # the one local axis the pose maps onto this one, if there is a single one
+        if r0 != 0.0:
+            k = 0 if r1 == 0.0 and r2 == 0.0 else -1
+        elif r1 != 0.0:
+            k = 1 if r2 == 0.0 else -1
+        else:
+            k = 2 if r2 != 0.0 else -1
+        if k >= 0:
+            b = _local(prim.geom, prim.params, k)
+            b0, b1 = b if b is not None else prim.geom.bounds(prim.params)[:, k].tolist()
+            r = (r0, r1, r2)[k]
             # the local box's corners lie at b0 and b0 + (b1 - b0), as Primitive.bounds puts them
             v0, v1 = t + b0 * r, t + (b0 + (b1 - b0)) * r
             if r < 0.0:

@@ -107,7 +107,8 @@ def _carrier(p, width, z0, spine, t):
 def _back(template, prims, lean, top):
     # leaned back in one stacked product (its slices are the products pr.placed would make)
     poses = rot_y(lean) @ np.concatenate([pr.pose for pr in prims]).reshape(-1, 4, 4)
-    prims = [Primitive(pr.geom, pr.params, T, pr.role) for pr, T in zip(prims, poses)]
+    new = tuple.__new__  # Primitive(...) without the NamedTuple's Python-level __new__
+    prims = [new(Primitive, (pr.geom, pr.params, T, pr.role)) for pr, T in zip(prims, poses)]
     return Part("backrest", template, prims, anchors={"top": (top * math.sin(lean), 0.0, top * math.cos(lean))},
                 regions={"push": Region(("board",))})
 

@@ -27,7 +27,7 @@ def wall_radius(part: Part, z: float) -> float:
         if pr.geom is not Ring or pr.role != "wall":
             continue
         ro, _, h, _, tp = pr.params
-        z0 = pr.pose[2, 3] - h / 2
+        z0 = float(pr.pose[2, 3]) - h / 2  # a float: numpy scalars are slower at the arithmetic
         if z0 - 1e-9 <= z <= z0 + h + 1e-9:
             r = max(r, ro + tp * (z - z0) / h)
     return r
