@@ -103,8 +103,17 @@ class LinkBuilder:
         j.parent = self.parent.name
         j.child = self.name
         j.origin = origin
+        # a copy filled in costs half of np.array((x, y, z)), the same values;
         # x / 1.0 is x: unit axes (the usual case) skip the divisions
-        j.axis = _array((x, y, z) if norm == 1.0 else (x / norm, y / norm, z / norm))
+        j.axis = a = _AXIS.copy()
+        if norm == 1.0:
+            a[0] = x
+            a[1] = y
+            a[2] = z
+        else:
+            a[0] = x / norm
+            a[1] = y / norm
+            a[2] = z / norm
         j.limits = lim
         self.link.joint = j
         return j
@@ -112,7 +121,7 @@ class LinkBuilder:
 
 _JOINT_TYPES = frozenset(JOINT_TYPES)
 _UNLIMITED = (-math.inf, math.inf)
-_array = np.array
+_AXIS = np.zeros(3)
 
 
 class ObjectBuilder:
@@ -141,7 +150,15 @@ class ObjectBuilder:
         links = self._links
         if parent is None and links:
             raise ValueError("the object already has a root link; pass a parent")
-        lb = LinkBuilder(self, self._unique(name), parent)
+        # LinkBuilder(self, unique name, parent) without its __init__ call
+        lb = _new(LinkBuilder)
+        lb._shared = shared = self._shared
+        names = shared.names
+        k = names.get(name, 0)
+        names[name] = k + 1
+        lb.name = name = f"{name}_{k}"
+        lb.parent = parent
+        lb.link = Link(name)
         links.append(lb)
         return lb
 

@@ -112,8 +112,8 @@ def state_view(bitgen: np.random.PCG64):
     """Writable ``ctypes`` views ``(words, flags)`` of a PCG64's state, or None.
 
     ``words`` (4 uint64: state low, state high, increment low, increment high) and
-    ``flags`` (``has_uint32``, ``uinteger``) alias the bit generator's C state, so
-    assigning them is what assigning ``bitgen.state`` does. They are returned only
+    ``flags`` (``has_uint32``, ``uinteger``), memoryviews of the bit generator's C
+    state, so that assigning their items is what assigning ``bitgen.state`` does. They are returned only
     when a round trip through numpy's ``state`` property confirms that layout (and the
     bit generator is then left in an arbitrary state); else None. Keep ``bitgen`` alive
     as long as the views.
@@ -126,6 +126,8 @@ def state_view(bitgen: np.random.PCG64):
         addr = bitgen.ctypes.state_address  # a pcg64_state: {pcg64_random_t *, int, uint32}
         words = (ctypes.c_uint64 * 4).from_address(ctypes.c_void_p.from_address(addr).value)
         flags = (ctypes.c_uint32 * 2).from_address(addr + ctypes.sizeof(ctypes.c_void_p))
+        # memoryviews: item assignment costs less than on the ctypes arrays
+        words, flags = memoryview(words).cast("B").cast("Q"), memoryview(flags).cast("B").cast("I")
     except (ImportError, AttributeError, TypeError, ValueError):  # pragma: no cover - no ctypes
         return None
     s, inc = (0x0123456789ABCDEF << 64) | 0xFEDCBA9876543210, (0x0F1E2D3C4B5A6978 << 64) | 0x8796A5B4C3D2E1F1
@@ -135,12 +137,9 @@ def state_view(bitgen: np.random.PCG64):
     if list(words) != [s & _MASK, s >> 64, inc & _MASK, inc >> 64] or list(flags) != [1, 0xDEADBEEF]:
         return None
     s, inc = inc - 1, s | 1
-    words[:] = (s & _MASK, s >> 64, inc & _MASK, inc >> 64)
-    flags[:] = (0, 0)
+    words[0], words[1], words[2], words[3] = s & _MASK, s >> 64, inc & _MASK, inc >> 64
+    flags[0] = flags[1] = 0
     return (words, flags) if bitgen.state == _state_dict(s, inc) else None
-
-
-_NO_UINT32 = (0, 0)
 
 
 class Streams:
@@ -161,7 +160,7 @@ class Streams:
         :func:`state_view` of ``bitgen``: the state is then written through it.
     """
 
-    __slots__ = ("seed", "_words", "_bitgen", "_gen", "_view")
+    __slots__ = ("seed", "_words", "_bitgen", "_gen", "_view", "_inc")
 
     def __init__(self, seed: int, bitgen: np.random.PCG64, gen: np.random.Generator | None = None,
                  view: tuple | None = None):
@@ -170,6 +169,8 @@ class Streams:
         self._bitgen = bitgen
         self._gen = np.random.Generator(bitgen) if gen is None else gen
         self._view = view
+        inc = self._words[1]
+        self._inc = (inc & _MASK, inc >> 64)
 
     def open(self, key: int) -> np.random.Generator:
         """The generator positioned at the start of stream ``key`` (0 <= key < 2**32)."""
@@ -182,8 +183,11 @@ class Streams:
             self._bitgen.state = _state_dict(state, inc)
         else:
             # the same four words and zeroed 32-bit cache as the setter writes
-            view[0][:] = (state & _MASK, state >> 64, inc & _MASK, inc >> 64)
-            view[1][:] = _NO_UINT32
+            words, flags = view
+            words[0] = state & _MASK
+            words[1] = state >> 64
+            words[2], words[3] = self._inc
+            flags[0] = flags[1] = 0
         return self._gen
 
 
