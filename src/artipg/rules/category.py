@@ -136,10 +136,11 @@ class Category:
             sub = top.choice("subcategory", self.subcategories)
             builder = ObjectBuilder(record)
             out: dict = {}
+            scratch = st.scratch
             for slot, key in zip(self.order, self._keys):
                 # read ahead: the slot's recorder is the only user of its stream
                 name = slot.name
-                ctx = SlotContext(ParamRecorder._on_stream(st.open(key), record, overrides, name),
+                ctx = SlotContext(ParamRecorder._on_stream(st.open(key), record, overrides, name, scratch),
                                   sub, out, builder, templates, name)
                 out[name] = slot.build(ctx)
         obj = builder.build(self.name, sub, seed, record, templates)

@@ -103,10 +103,12 @@ class _Draws:
     """The uniform doubles of one generator, optionally read ahead in blocks.
 
     ``buf`` holds the doubles read ahead but not used yet, last to be used first; it is
-    shared (the same list object) by every recorder of the stream.
+    shared (the same list object) by every recorder of the stream. ``scratch`` maps a
+    block size to an array the block is drawn into (filled in as needed; it may be
+    shared with other draws on the same thread, as a block is copied out at once).
     """
 
-    __slots__ = ("gen", "buf", "block", "period")
+    __slots__ = ("gen", "buf", "block", "period", "scratch")
 
     def __init__(self, gen: np.random.Generator, read_ahead: bool):
         self.gen = gen
@@ -114,13 +116,18 @@ class _Draws:
         bitgen = getattr(gen, "bit_generator", None)
         self.period = _REWINDABLE.get(type(bitgen)) if read_ahead else None
         self.block = _FIRST_BLOCK if self.period else 1
+        self.scratch = {}
 
     def refill(self) -> float:
         """The next double when ``buf`` is empty; reads the next block into ``buf``."""
         n = self.block
         if n == 1:
             return self.gen.random()
-        block = self.gen.random(n).tolist()
+        out = self.scratch.get(n)
+        if out is None:
+            out = self.scratch[n] = np.empty(n)
+        # drawing into a kept array saves random()'s allocation: the same doubles
+        block = self.gen.random(out=out).tolist()
         block.reverse()
         buf = self.buf
         buf += block
@@ -178,14 +185,18 @@ class ParamRecorder:
         self._dot = f"{prefix}." if prefix else ""  # each key is _dot + name
 
     @classmethod
-    def _on_stream(cls, gen: np.random.Generator, record: dict, overrides: dict, prefix: str) -> "ParamRecorder":
+    def _on_stream(cls, gen: np.random.Generator, record: dict, overrides: dict, prefix: str,
+                   scratch: dict) -> "ParamRecorder":
         """``ParamRecorder(gen, record, overrides, prefix, read_ahead=True)`` for a
-        Generator on a PCG64 (a slot's stream), without the generic checks."""
+        Generator on a PCG64 (a slot's stream), without the generic checks, drawing its
+        blocks into the arrays of ``scratch`` (block size -> array, filled in as needed;
+        the slots of an object share it)."""
         draws = _new(_Draws)
         draws.gen = gen
         draws.buf = buf = []
         draws.period = _PCG_PERIOD
         draws.block = _FIRST_BLOCK
+        draws.scratch = scratch
         s = _new(cls)
         s._draws = draws
         s._buf = buf

@@ -158,12 +158,22 @@ class Streams:
         A generator on ``bitgen`` (made here when omitted).
     view : tuple, optional
         :func:`state_view` of ``bitgen``: the state is then written through it.
+    scratch : dict, optional
+        Kept in :attr:`scratch` (a new dict when omitted).
+
+    Attributes
+    ----------
+    scratch : dict
+        Scratch arrays for the users of these streams (the recorders of
+        :meth:`artipg.rules.Category.generate` draw their blocks into them); kept with
+        the pooled generator, so they outlive one object.
     """
 
-    __slots__ = ("seed", "_words", "_bitgen", "_gen", "_view", "_inc")
+    __slots__ = ("seed", "_words", "_bitgen", "_gen", "_view", "_inc", "scratch")
 
     def __init__(self, seed: int, bitgen: np.random.PCG64, gen: np.random.Generator | None = None,
-                 view: tuple | None = None):
+                 view: tuple | None = None, scratch: dict | None = None):
+        self.scratch = {} if scratch is None else scratch
         self.seed = int(seed)
         self._words = _pcg_words(self.seed)
         self._bitgen = bitgen
@@ -209,16 +219,16 @@ class streams:
         if pool is None:
             pool = _POOL.free = []
         self._pool = pool
-        # (Generator, its PCG64, state view), kept together: making the Generator costs
-        # as much as a draw, the view much more
+        # (Generator, its PCG64, state view, scratch arrays), kept together: making the
+        # Generator costs as much as a draw, the view much more
         if pool:
             lent = pool.pop()
         else:
             bitgen = np.random.PCG64(0)
-            lent = (np.random.Generator(bitgen), bitgen, state_view(bitgen))
+            lent = (np.random.Generator(bitgen), bitgen, state_view(bitgen), {})
         self._lent = lent
         try:
-            return Streams(self.seed, lent[1], lent[0], lent[2])
+            return Streams(self.seed, lent[1], lent[0], lent[2], lent[3])
         except BaseException:
             pool.append(lent)
             raise
