@@ -430,6 +430,32 @@ def test_rotation_is_the_nested_formula_in_a_fresh_array():
     assert translation(1.0, 2.0, 3.0)[0, 0] == 1.0
 
 
+def test_names_count_uses_of_each_base_name():
+    b = ObjectBuilder()
+    root = b.create_link("base")
+    links = [b.create_link("door", root) for _ in range(70)]
+    assert [lb.name for lb in links] == [f"door_{k}" for k in range(70)] and root.name == "base_0"
+    parts = [root.add(Part("handle", "bar", [cuboid(0.1, 0.1, 0.1)]), name=n) for n in ["knob"] * 70 + [None] * 3]
+    assert [p.name for p in parts] == [f"knob_{k}" for k in range(70)] + ["handle_0", "handle_1", "handle_2"]
+
+
+def test_set_joint_makes_the_dataclass_joint():
+    import artipg.model.articulation as art
+
+    b = ObjectBuilder()
+    root = b.create_link("base")
+    child = b.create_link("lid", root)
+    T = np.eye(4)
+    for kind, limits in [("revolute", (0.0, 1.5)), ("prismatic", (0, 1)), ("continuous", (0.0, 0.0)), ("fixed", (0.0, 0.0))]:
+        j = child.set_joint(kind, T, axis=(0, 1, 0), limits=limits, name=None if kind != "fixed" else "pin")
+        ref = art.Joint("pin" if kind == "fixed" else "joint_lid_0", kind, "base_0", "lid_0", T, np.array([0.0, 1.0, 0.0]),
+                        (-np.inf, np.inf) if kind == "continuous" else (float(limits[0]), float(limits[1])))
+        assert type(j) is art.Joint and vars(j).keys() == vars(ref).keys() and child.link.joint is j
+        for f in dataclasses.fields(art.Joint):
+            a, r = getattr(j, f.name), getattr(ref, f.name)
+            assert (a.tobytes() == r.tobytes()) if isinstance(r, np.ndarray) else (a == r and type(a) is type(r)), f.name
+
+
 def test_joint_axis_is_normalised_as_before():
     b = ObjectBuilder()
     root = b.create_link("base")

@@ -24,6 +24,9 @@ class _Shared:
 
 
 _new = object.__new__
+# "_0", "_1", ...: base + suffix costs half of f"{base}_{k}" (instance names, by the dozen)
+_SUFFIX = tuple(f"_{k}" for k in range(64))
+_NSUFFIX = len(_SUFFIX)
 
 
 class LinkBuilder:
@@ -54,7 +57,7 @@ class LinkBuilder:
         names = shared.names
         k = names.get(base, 0)
         names[base] = k + 1
-        part.name = f"{base}_{k}"
+        part.name = base + _SUFFIX[k] if k < _NSUFFIX else f"{base}_{k}"
         record = shared.record
         if record is None:
             part.param_span = (0, 0)
@@ -143,7 +146,7 @@ class ObjectBuilder:
         names = self._shared.names
         k = names.get(base, 0)
         names[base] = k + 1
-        return f"{base}_{k}"
+        return base + _SUFFIX[k] if k < _NSUFFIX else f"{base}_{k}"
 
     def create_link(self, name: str, parent: LinkBuilder | None = None) -> LinkBuilder:
         """A new link named ``name`` (made unique), child of ``parent`` (None: the root)."""
@@ -156,7 +159,7 @@ class ObjectBuilder:
         names = shared.names
         k = names.get(name, 0)
         names[name] = k + 1
-        lb.name = name = f"{name}_{k}"
+        lb.name = name = name + _SUFFIX[k] if k < _NSUFFIX else f"{name}_{k}"
         lb.parent = parent
         lb.link = Link(name)
         links.append(lb)
