@@ -274,9 +274,9 @@ def test_region_and_grasp_init_as_the_generated_dataclass_init():
 
 
 def test_generated_objects_are_freed_without_the_cyclic_collector():
-    # the link builders refer to their builder weakly and the primitive table's groups
-    # hold its arrays, not the table: no reference cycle keeps a dropped object's parts,
-    # parameter record or table alive until a collection
+    # the link builders share their builder's counters, not the builder, and the
+    # primitive table's groups hold its arrays, not the table: no reference cycle keeps
+    # a dropped object's parts, parameter record or table alive until a collection
     enabled = gc.isenabled()
     gc.disable()
     try:

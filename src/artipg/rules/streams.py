@@ -109,14 +109,14 @@ def _stream_jump(key: int) -> tuple[int, int]:
 
 
 def state_view(bitgen: np.random.PCG64):
-    """Writable ``ctypes`` views ``(words, flags)`` of a PCG64's state, or None.
+    """Writable views ``(words, flags)`` of a PCG64's C state, or None.
 
     ``words`` (4 uint64: state low, state high, increment low, increment high) and
-    ``flags`` (``has_uint32``, ``uinteger``), memoryviews of the bit generator's C
-    state, so that assigning their items is what assigning ``bitgen.state`` does. They are returned only
-    when a round trip through numpy's ``state`` property confirms that layout (and the
-    bit generator is then left in an arbitrary state); else None. Keep ``bitgen`` alive
-    as long as the views.
+    ``flags`` (``has_uint32``, ``uinteger``) are memoryviews of the bit generator's
+    state memory (found through ``bitgen.ctypes``): assigning all their items is what
+    assigning ``bitgen.state`` does. They are returned only when a round trip through
+    numpy's ``state`` property confirms that layout (the bit generator is then left in
+    an arbitrary state), else None. Keep ``bitgen`` alive as long as the views.
     """
     if type(bitgen) is not np.random.PCG64:
         return None
