@@ -8,7 +8,7 @@ import numpy as np
 
 from artipg.geometry.base import CollisionPiece, GeometryTemplate, Primitive
 from artipg.geometry.patches import linear
-from artipg.geometry.transforms import IDENTITY, translation
+from artipg.geometry.transforms import _EYE, IDENTITY, translation
 
 # Primitive(...) without the NamedTuple's Python-level __new__ (same tuple): the
 # constructors below run dozens of times per object
@@ -270,9 +270,13 @@ def cuboid(sx: float, sy: float, sz: float, pose: np.ndarray = IDENTITY, role: s
 
 def cuboid_between(lo, hi, role: str = "") -> Primitive:
     """An axis-aligned :class:`Cuboid` spanning corners ``lo`` and ``hi`` (3,) in metres."""
-    return _tuple_new(Primitive, (Cuboid, (float(hi[0] - lo[0]), float(hi[1] - lo[1]), float(hi[2] - lo[2])),
-                                  translation(0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1]), 0.5 * (lo[2] + hi[2])),
-                                  role))
+    x0, y0, z0 = lo
+    x1, y1, z1 = hi
+    T = _EYE.copy()  # translation() of the centre, inline
+    T[0, 3] = 0.5 * (x0 + x1)
+    T[1, 3] = 0.5 * (y0 + y1)
+    T[2, 3] = 0.5 * (z0 + z1)
+    return _tuple_new(Primitive, (Cuboid, (float(x1 - x0), float(y1 - y0), float(z1 - z0)), T, role))
 
 
 def rect_ring(ox, oy, depth, ix, iy, pose: np.ndarray = IDENTITY, role: str = "") -> Primitive:

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import math
-import weakref
 
 import numpy as np
 
@@ -12,28 +11,60 @@ from artipg.model.articulation import JOINT_TYPES, ArticulatedObject, Joint, Lin
 from artipg.model.part import Part
 
 
+class _Shared:
+    """What an :class:`ObjectBuilder` shares with its link builders: the name counters,
+    the parameter record and the record position of the last added part."""
+
+    __slots__ = ("names", "record", "mark")
+
+    def __init__(self, record: dict | None):
+        self.names: dict[str, int] = {}
+        self.record = record
+        self.mark = 0
+
+
+_new = object.__new__
+# "_0", "_1", ...: base + suffix costs half of f"{base}_{k}" (instance names, by the dozen)
+_SUFFIX = tuple(f"_{k}" for k in range(64))
+_NSUFFIX = len(_SUFFIX)
+
+
 class LinkBuilder:
     """A link under construction. Obtain one from :meth:`ObjectBuilder.create_link`.
 
-    It refers to its :class:`ObjectBuilder` weakly, so keep the builder while adding
-    parts (a link builder whose builder is gone raises ``ReferenceError``).
+    It shares its builder's name counters and parameter record, not the builder itself:
+    a strong reference would close the cycle builder -> link builders -> builder, and
+    every finished object (its parts and parameter record, reachable from the builder)
+    would then wait for the cyclic garbage collector instead of being freed when dropped.
     """
 
     def __init__(self, owner: "ObjectBuilder", name: str, parent: "LinkBuilder | None"):
-        # a strong reference would close the cycle builder -> link builders -> builder,
-        # and every finished object (its parts and parameter record, reachable from
-        # the builder) would then wait for the cyclic garbage collector instead of
-        # being freed when dropped; that collector's passes cost more than the proxy
-        self._owner = weakref.proxy(owner)
+        self._shared = owner._shared
         self.name = name
         self.parent = parent
         self.link = Link(name)
 
     def add(self, part: Part, pose: np.ndarray = IDENTITY, name: str | None = None) -> Part:
-        """Place ``part`` at ``pose`` (part frame in this link's frame); returns it."""
+        """Place ``part`` at ``pose`` (part frame in this link's frame); returns it.
+
+        The part is named ``{name}_{k}`` (``name`` defaults to its semantic label), ``k``
+        counting the earlier uses of that name in the object, and remembers the span of
+        the parameter record drawn since the previous part was added.
+        """
+        shared = self._shared
         part.pose = pose
-        part.name = self._owner._unique(name or part.semantic)
-        part.param_span = self._owner._param_span()
+        base = name or part.semantic
+        names = shared.names
+        k = names.get(base, 0)
+        names[base] = k + 1
+        part.name = base + _SUFFIX[k] if k < _NSUFFIX else f"{base}_{k}"
+        record = shared.record
+        if record is None:
+            part.param_span = (0, 0)
+        else:
+            start = shared.mark
+            shared.mark = stop = len(record)
+            part.param_span = (start, stop)
         self.link.parts.append(part)
         return part
 
@@ -54,22 +85,46 @@ class LinkBuilder:
         """
         if self.parent is None:
             raise ValueError("the root link has no joint")
-        if type not in JOINT_TYPES:
+        if type not in _JOINT_TYPES:
             raise ValueError(f"joint type must be one of {JOINT_TYPES}, got {type!r}")
         x, y, z = axis
         x, y, z = float(x), float(y), float(z)
         norm = math.sqrt(x * x + y * y + z * z)
         if not norm > 0.0:
             raise ValueError(f"joint {self.name}: axis must be non-zero, got {axis}")
-        a = np.array((x / norm, y / norm, z / norm))
-        lo, hi = float(limits[0]), float(limits[1])
         if type == "continuous":
-            lo, hi = -np.inf, np.inf
-        elif type != "fixed" and not lo < hi:
-            raise ValueError(f"joint {self.name}: limits must satisfy lower < upper, got {limits}")
-        j = Joint(name or f"joint_{self.name}", type, self.parent.name, self.name, origin, a, (lo, hi))
+            lim = _UNLIMITED
+        else:
+            lo, hi = float(limits[0]), float(limits[1])
+            if type != "fixed" and not lo < hi:
+                raise ValueError(f"joint {self.name}: limits must satisfy lower < upper, got {limits}")
+            lim = (lo, hi)
+        # Joint(...) without its __init__ call (the same fields)
+        j = _new(Joint)
+        j.name = name or f"joint_{self.name}"
+        j.type = type
+        j.parent = self.parent.name
+        j.child = self.name
+        j.origin = origin
+        # a copy filled in costs half of np.array((x, y, z)), the same values;
+        # x / 1.0 is x: unit axes (the usual case) skip the divisions
+        j.axis = a = _AXIS.copy()
+        if norm == 1.0:
+            a[0] = x
+            a[1] = y
+            a[2] = z
+        else:
+            a[0] = x / norm
+            a[1] = y / norm
+            a[2] = z / norm
+        j.limits = lim
         self.link.joint = j
         return j
+
+
+_JOINT_TYPES = frozenset(JOINT_TYPES)
+_UNLIMITED = (-math.inf, math.inf)
+_AXIS = np.zeros(3)
 
 
 class ObjectBuilder:
@@ -85,28 +140,29 @@ class ObjectBuilder:
 
     def __init__(self, record: dict | None = None):
         self._links: list[LinkBuilder] = []
-        self._names: dict[str, int] = {}
-        self._record = record
-        self._mark = 0
-
-    def _param_span(self) -> tuple[int, int]:
-        """Record positions drawn since the previous part was added."""
-        if self._record is None:
-            return (0, 0)
-        start, self._mark = self._mark, len(self._record)
-        return (start, self._mark)
+        self._shared = _Shared(record)
 
     def _unique(self, base: str) -> str:
-        k = self._names.get(base, 0)
-        self._names[base] = k + 1
-        return f"{base}_{k}"
+        names = self._shared.names
+        k = names.get(base, 0)
+        names[base] = k + 1
+        return base + _SUFFIX[k] if k < _NSUFFIX else f"{base}_{k}"
 
     def create_link(self, name: str, parent: LinkBuilder | None = None) -> LinkBuilder:
         """A new link named ``name`` (made unique), child of ``parent`` (None: the root)."""
-        if parent is None and self._links:
+        links = self._links
+        if parent is None and links:
             raise ValueError("the object already has a root link; pass a parent")
-        lb = LinkBuilder(self, self._unique(name), parent)
-        self._links.append(lb)
+        # LinkBuilder(self, unique name, parent) without its __init__ call
+        lb = _new(LinkBuilder)
+        lb._shared = shared = self._shared
+        names = shared.names
+        k = names.get(name, 0)
+        names[name] = k + 1
+        lb.name = name = name + _SUFFIX[k] if k < _NSUFFIX else f"{name}_{k}"
+        lb.parent = parent
+        lb.link = Link(name)
+        links.append(lb)
         return lb
 
     @property

@@ -130,16 +130,19 @@ class Category:
         """Build the object for ``seed`` (with optional parameter overrides)."""
         record: dict = {}
         templates: dict = {}
+        overrides = overrides or {}
         with streams(seed) as st:
             top = ParamRecorder(st.open(0), record, overrides)
             sub = top.choice("subcategory", self.subcategories)
             builder = ObjectBuilder(record)
             out: dict = {}
+            scratch = st.scratch
             for slot, key in zip(self.order, self._keys):
-                # read_ahead: the slot's recorder is the only user of its stream
-                ctx = SlotContext(ParamRecorder(st.open(key), record, overrides, slot.name, read_ahead=True),
-                                  sub, out, builder, templates, slot.name)
-                out[slot.name] = slot.build(ctx)
+                # read ahead: the slot's recorder is the only user of its stream
+                name = slot.name
+                ctx = SlotContext(ParamRecorder._on_stream(st.open(key), record, overrides, name, scratch),
+                                  sub, out, builder, templates, name)
+                out[name] = slot.build(ctx)
         obj = builder.build(self.name, sub, seed, record, templates)
         obj.materials = self.materials
         return obj

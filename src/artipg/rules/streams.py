@@ -7,8 +7,14 @@ increment, written straight into a bit generator borrowed from a per-thread pool
 stream ``key`` (a 32-bit integer) starts ``key * 2**64`` draws further along that
 sequence (PCG64 jumps ahead in O(log n); the jump's two constants are computed once per
 key and the jumped state written directly): streams never overlap within 2**64 draws,
-opening one costs about 2 µs, and each depends only on (seed, key), never on the order
-in which streams are opened.
+opening one costs well under 1 µs, and each depends only on (seed, key), never on the
+order in which streams are opened.
+
+The pooled generators take the state through a ``ctypes`` view of the PCG64 state
+words, which costs a third of numpy's ``state`` setter (a dict, a scratch array and
+four big-integer conversions); the view is used only after a round trip through the
+setter has shown that it reads and writes exactly what the setter does, and numpy's
+setter is used otherwise.
 """
 
 from __future__ import annotations
@@ -44,11 +50,22 @@ def pcg_state(seed: int) -> dict:
 
 def _pcg_words(seed: int) -> tuple[int, int]:
     """(state, odd increment) of :func:`pcg_state`, as 128-bit ints."""
-    w0 = _splitmix64(_splitmix64(seed & _MASK) ^ ((seed >> 64) & _MASK))
-    w1 = _splitmix64(w0)
-    w2 = _splitmix64(w1)
-    w3 = _splitmix64(w2)
-    return (w0 << 64) | w1, ((w2 << 64) | w3) | 1
+    hit = _RECENT.get(seed)
+    if hit is None:
+        w0 = _splitmix64(_splitmix64(seed & _MASK) ^ ((seed >> 64) & _MASK))
+        w1 = _splitmix64(w0)
+        w2 = _splitmix64(w1)
+        w3 = _splitmix64(w2)
+        hit = (w0 << 64) | w1, ((w2 << 64) | w3) | 1
+        if len(_RECENT) >= 16:
+            _RECENT.clear()
+        _RECENT[seed] = hit
+    return hit
+
+
+# The words of the last few seeds (about 4 µs of big-integer arithmetic each): an
+# object's seed is hashed when it is generated and again when its points are drawn.
+_RECENT: dict[int, tuple[int, int]] = {}
 
 
 def _state_dict(state: int, inc: int) -> dict:
@@ -91,18 +108,79 @@ def _stream_jump(key: int) -> tuple[int, int]:
     return hit
 
 
+def state_view(bitgen: np.random.PCG64):
+    """Writable views ``(words, flags)`` of a PCG64's C state, or None.
+
+    ``words`` (4 uint64: state low, state high, increment low, increment high) and
+    ``flags`` (``has_uint32``, ``uinteger``) are memoryviews of the bit generator's
+    state memory (found through ``bitgen.ctypes``): assigning all their items is what
+    assigning ``bitgen.state`` does. They are returned only when a round trip through
+    numpy's ``state`` property confirms that layout (the bit generator is then left in
+    an arbitrary state), else None. Keep ``bitgen`` alive as long as the views.
+    """
+    if type(bitgen) is not np.random.PCG64:
+        return None
+    try:
+        import ctypes
+
+        addr = bitgen.ctypes.state_address  # a pcg64_state: {pcg64_random_t *, int, uint32}
+        words = (ctypes.c_uint64 * 4).from_address(ctypes.c_void_p.from_address(addr).value)
+        flags = (ctypes.c_uint32 * 2).from_address(addr + ctypes.sizeof(ctypes.c_void_p))
+        # memoryviews: item assignment costs less than on the ctypes arrays
+        words, flags = memoryview(words).cast("B").cast("Q"), memoryview(flags).cast("B").cast("I")
+    except (ImportError, AttributeError, TypeError, ValueError):  # pragma: no cover - no ctypes
+        return None
+    s, inc = (0x0123456789ABCDEF << 64) | 0xFEDCBA9876543210, (0x0F1E2D3C4B5A6978 << 64) | 0x8796A5B4C3D2E1F1
+    probe = _state_dict(s, inc)
+    probe["has_uint32"], probe["uinteger"] = 1, 0xDEADBEEF
+    bitgen.state = probe
+    if list(words) != [s & _MASK, s >> 64, inc & _MASK, inc >> 64] or list(flags) != [1, 0xDEADBEEF]:
+        return None
+    s, inc = inc - 1, s | 1
+    words[0], words[1], words[2], words[3] = s & _MASK, s >> 64, inc & _MASK, inc >> 64
+    flags[0] = flags[1] = 0
+    return (words, flags) if bitgen.state == _state_dict(s, inc) else None
+
+
 class Streams:
     """Opens the streams of one object on one borrowed bit generator.
 
     Only the most recently opened stream may be drawn from: opening another one
     rewinds the shared generator. Use as ``with streams(seed) as s: rng = s.open(key)``.
+
+    Parameters
+    ----------
+    seed : int
+        The object seed (0 <= seed < 2**128).
+    bitgen : numpy.random.PCG64
+        The bit generator the streams are opened on.
+    gen : numpy.random.Generator, optional
+        A generator on ``bitgen`` (made here when omitted).
+    view : tuple, optional
+        :func:`state_view` of ``bitgen``: the state is then written through it.
+    scratch : dict, optional
+        Kept in :attr:`scratch` (a new dict when omitted).
+
+    Attributes
+    ----------
+    scratch : dict
+        Scratch arrays for the users of these streams (the recorders of
+        :meth:`artipg.rules.Category.generate` draw their blocks into them); kept with
+        the pooled generator, so they outlive one object.
     """
 
-    def __init__(self, seed: int, bitgen: np.random.PCG64, gen: np.random.Generator | None = None):
+    __slots__ = ("seed", "_words", "_bitgen", "_gen", "_view", "_inc", "scratch")
+
+    def __init__(self, seed: int, bitgen: np.random.PCG64, gen: np.random.Generator | None = None,
+                 view: tuple | None = None, scratch: dict | None = None):
+        self.scratch = {} if scratch is None else scratch
         self.seed = int(seed)
         self._words = _pcg_words(self.seed)
         self._bitgen = bitgen
         self._gen = np.random.Generator(bitgen) if gen is None else gen
+        self._view = view
+        inc = self._words[1]
+        self._inc = (inc & _MASK, inc >> 64)
 
     def open(self, key: int) -> np.random.Generator:
         """The generator positioned at the start of stream ``key`` (0 <= key < 2**32)."""
@@ -110,7 +188,16 @@ class Streams:
         if key:  # what bitgen.advance(key << 64) does, without its call overhead
             a, b = _stream_jump(key)
             state = (state * a + inc * b) & _MASK128
-        self._bitgen.state = _state_dict(state, inc)
+        view = self._view
+        if view is None:
+            self._bitgen.state = _state_dict(state, inc)
+        else:
+            # the same four words and zeroed 32-bit cache as the setter writes
+            words, flags = view
+            words[0] = state & _MASK
+            words[1] = state >> 64
+            words[2], words[3] = self._inc
+            flags[0] = flags[1] = 0
         return self._gen
 
 
@@ -122,7 +209,7 @@ class streams:
     generator, so the two never share state.
     """
 
-    __slots__ = ("seed", "_pool", "_gen")
+    __slots__ = ("seed", "_pool", "_lent")
 
     def __init__(self, seed: int):
         self.seed = seed
@@ -132,13 +219,19 @@ class streams:
         if pool is None:
             pool = _POOL.free = []
         self._pool = pool
-        # a Generator on a PCG64, kept together: making the Generator costs as much as a draw
-        self._gen = pool.pop() if pool else np.random.Generator(np.random.PCG64(0))
+        # (Generator, its PCG64, state view, scratch arrays), kept together: making the
+        # Generator costs as much as a draw, the view much more
+        if pool:
+            lent = pool.pop()
+        else:
+            bitgen = np.random.PCG64(0)
+            lent = (np.random.Generator(bitgen), bitgen, state_view(bitgen), {})
+        self._lent = lent
         try:
-            return Streams(self.seed, self._gen.bit_generator, self._gen)
+            return Streams(self.seed, lent[1], lent[0], lent[2], lent[3])
         except BaseException:
-            pool.append(self._gen)
+            pool.append(lent)
             raise
 
     def __exit__(self, *exc) -> None:
-        self._pool.append(self._gen)
+        self._pool.append(self._lent)
