@@ -210,8 +210,6 @@ class PrimitiveTable:
 
     def __init__(self, geoms: list[type], flat: np.ndarray, start: list[int], foff: list[int], order: np.ndarray,
                  prim_T: np.ndarray, prim_link: np.ndarray, prim_part: np.ndarray, part_semantic: np.ndarray):
-        rows = _Rows(flat, start, foff, order, prim_T, prim_link, prim_part)
-        self.groups = [_Group(rows, geom, g) for g, geom in enumerate(geoms)]
         self._geoms = tuple(geoms)
         self._flat = flat
         self._start = start
@@ -222,6 +220,13 @@ class PrimitiveTable:
         self.prim_link = prim_link
         self.prim_part = prim_part
         self.part_semantic = part_semantic
+
+    @cached_property
+    def groups(self) -> list[_Group]:
+        """One :class:`_Group` per geometry template, in order of first appearance (made
+        when first read: the sampling path reads the packed arrays instead)."""
+        rows = _Rows(self._flat, self._start, self._foff, self._order, self.prim_T, self.prim_link, self.prim_part)
+        return [_Group(rows, geom, g) for g, geom in enumerate(self._geoms)]
 
     @classmethod
     def of(cls, obj) -> "PrimitiveTable":
@@ -420,11 +425,13 @@ class PrimitiveTable:
         return a / a.sum()
 
     # ------------------------------------------------------------ frames and boxes
-    def shift_root(self, S: np.ndarray) -> None:
-        """Apply object-frame transform ``S`` to every root-link primitive."""
+    def shift_root(self, S: np.ndarray, moved: np.ndarray | None = None) -> None:
+        """Apply object-frame transform ``S`` to every root-link primitive; ``moved``, when
+        given, is the product ``S @ prim_T[:n]`` (n, 4, 4) already computed (n root
+        primitives)."""
         n = self._n_root
-        self.prim_T[:n] = S @ self.prim_T[:n]
-        for g in self.groups:
+        self.prim_T[:n] = S @ self.prim_T[:n] if moved is None else moved
+        for g in self.__dict__.get("groups", ()):
             g.__dict__.pop("T", None)
 
     @cached_property

@@ -173,7 +173,7 @@ class ArticulatedObject:
 
     def link_poses(self, qpos=None) -> np.ndarray:
         """Pose (L, 4, 4) of every link in the object frame at joint state ``qpos``."""
-        q = self.qpos_dict(qpos)
+        q = self.qpos_dict(qpos) if qpos is not None else None
         links = self.links
         T = np.empty((len(links), 4, 4))
         T[0] = IDENTITY
@@ -183,6 +183,9 @@ class ArticulatedObject:
         # same product for each), then the moved ones times their motion
         origins = np.concatenate([lk.joint.origin for lk in links[1:]]).reshape(-1, 4, 4)
         for kids, parents, joints, members in self._levels:
+            if not q and type(kids) is slice:  # straight into T (the parents' rows come before)
+                _matmul(T[parents], origins[joints], out=T[kids])
+                continue
             A = T[parents] @ origins[joints]
             if q:
                 for k, i in enumerate(members):
