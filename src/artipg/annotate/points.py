@@ -18,6 +18,7 @@ from typing import NamedTuple
 import numpy as np
 
 from artipg.geometry.patches import FAMILIES, place_family
+from artipg.geometry.prism import Prism
 from artipg.rules.streams import streams
 from artipg.vocabulary import SEMANTIC_LABELS, label_id
 
@@ -159,8 +160,7 @@ def _kernels():
 
 
 #: Geometry templates of a table's groups -> (their codes (G,), the same as a tuple,
-#: any ring or torus, any prism) for the compiled kernels, or None when one has no
-#: compiled twin.
+#: any ring or torus) for the compiled kernels, or None when one has no compiled twin.
 _KERNEL_INFO: dict[tuple, tuple | None] = {}
 
 
@@ -168,13 +168,12 @@ def _kernel_info(geoms: tuple) -> tuple | None:
     hit = _KERNEL_INFO.get(geoms, False)
     if hit is not False:
         return hit
-    from artipg.geometry.kernels import ARC_COLUMN, BOX_CODES, CODES
+    from artipg.geometry.kernels import ARC_COLUMN, CODES
 
     code = [CODES.get(g) for g in geoms]
     info = None
     if code and None not in code:
-        info = (np.array(code, dtype=np.int64), tuple(code), any(c in ARC_COLUMN for c in code),
-                max(code) >= len(BOX_CODES))
+        info = (np.array(code, dtype=np.int64), tuple(code), any(c in ARC_COLUMN for c in code))
     if len(_KERNEL_INFO) < 4096:  # template combinations: a few dozen
         _KERNEL_INFO[geoms] = info
     return info
@@ -290,7 +289,7 @@ class PrimitiveTable:
         info = _kernel_info(self._geoms)
         if info is None:
             return None
-        code, _, arcs, _ = info
+        code, _, arcs = info
         flat = self._flat
         # the arcs of rings and tori are the only parameters whose cos and sin are read
         trig = (np.cos(flat), np.sin(flat)) if arcs else (flat, flat)
@@ -458,11 +457,9 @@ class PrimitiveTable:
         k = _kernels()
         out = np.empty((self.n_prims, 2, 3))
         ch = np.empty((2, self.n_prims, 3))
-        k.local_boxes(*self._packed, out, ch)
-        info = _kernel_info(self._geoms)
-        if info[3]:  # prisms: bounds_batch needs numpy's cos
-            for g, c in zip(self.groups, info[1]):
-                if c >= len(k.BOX_CODES):
+        if not k.local_boxes(*self._packed, out, ch):  # a prism side count off the kernel's table
+            for g, c in zip(self.groups, _kernel_info(self._geoms)[1]):
+                if c == k.CODES[Prism]:
                     b = out[g.prim] = g.geom.bounds_batch(g.P)
                     ch[0, g.prim] = (b[:, 0] + b[:, 1]) * 0.5
                     ch[1, g.prim] = (b[:, 1] - b[:, 0]) * 0.5
