@@ -183,9 +183,6 @@ class ArticulatedObject:
         # same product for each), then the moved ones times their motion
         origins = np.concatenate([lk.joint.origin for lk in links[1:]]).reshape(-1, 4, 4)
         for kids, parents, joints, members in self._levels:
-            if not q and type(kids) is slice:  # straight into T (the parents' rows come before)
-                _matmul(T[parents], origins[joints], out=T[kids])
-                continue
             A = T[parents] @ origins[joints]
             if q:
                 for k, i in enumerate(members):
