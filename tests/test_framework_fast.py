@@ -12,6 +12,7 @@ import pytest
 import artipg
 from artipg.annotate.points import PrimitiveTable
 from artipg.geometry import cuboid
+from artipg.geometry.box import Cuboid
 from artipg.geometry.patches import FAMILIES
 from artipg.geometry.transforms import rot_x, rot_z, translation
 from artipg.model import ObjectBuilder, Part
@@ -120,6 +121,34 @@ def test_compiled_table_matches_the_numpy_table_on_objects(category):
         assert _same_families(plain)
         assert all(same(a, b) for a, b in zip(plain.cell_rows, table.cell_rows))
         assert same(plain.cell_cdf, table.cell_cdf) and same(plain.cell_p, table.cell_p)
+
+
+def test_compiled_prism_boxes_match_bounds_batch_on_edge_rows():
+    """Prism and TriPrism local boxes: signed zeros and NaNs as np.minimum / np.maximum
+    give them, and prisms whose side count is off the kernel's table (non-integer, out of
+    range) left to bounds_batch."""
+    from artipg.geometry.prism import Prism, TriPrism
+
+    rng = np.random.default_rng(13)
+    nan = np.nan
+    tri = np.array([[0.0, 0.0, 0.0, 0.0], [-0.0, -0.0, -0.0, -0.0], [0.0, -0.0, 0.0, 1.0], [-0.0, 0.0, -0.0, 1.0],
+                    [0.4, -0.0, -0.2, 0.1], [0.4, 0.3, 0.2, -0.0], [nan, 0.3, 0.1, 0.2], [0.4, nan, nan, 0.2],
+                    [0.4, 0.3, -0.2, 0.1]])
+    prism = np.array([[0.0, 0.0, 3.0], [-0.0, -0.0, 16.0], [0.3, 0.2, 7.0], [nan, 0.2, 5.0], [0.3, nan, 4.0]])
+    def same_bits(a, b):  # signed zeros included; a NaN's sign is the arithmetic's choice
+        a, b = np.where(np.isnan(a), nan, a), np.where(np.isnan(b), nan, b)
+        return same(a, b)
+
+    for geoms_params in ([(TriPrism, tri)], [(Prism, prism)], [(Prism, prism), (TriPrism, tri)]):
+        table = _table(geoms_params, rng)
+        boxes = table._plain_local_boxes()
+        assert same_bits(table.local_boxes, boxes)
+        c, h = table._local_centre_half
+        assert same_bits(c, (boxes[:, 0] + boxes[:, 1]) * 0.5) and same_bits(h, (boxes[:, 1] - boxes[:, 0]) * 0.5)
+    for n in (2.0, 17.0, 4.5, nan):
+        bad = np.vstack([prism[:3], [[0.3, 0.2, n]]])
+        table = _table([(Cuboid, np.ones((2, 3))), (Prism, bad), (TriPrism, tri[:6])], rng)
+        assert same(table.local_boxes, table._plain_local_boxes()) and _same_centre_half(table), n
 
 
 def test_compiled_tables_take_only_exact_affine_rows():

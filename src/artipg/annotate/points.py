@@ -18,6 +18,7 @@ from typing import NamedTuple
 import numpy as np
 
 from artipg.geometry.patches import FAMILIES, place_family
+from artipg.geometry.prism import Prism
 from artipg.rules.streams import streams
 from artipg.vocabulary import SEMANTIC_LABELS, label_id
 
@@ -159,8 +160,7 @@ def _kernels():
 
 
 #: Geometry templates of a table's groups -> (their codes (G,), the same as a tuple,
-#: any ring or torus, any prism) for the compiled kernels, or None when one has no
-#: compiled twin.
+#: any ring or torus) for the compiled kernels, or None when one has no compiled twin.
 _KERNEL_INFO: dict[tuple, tuple | None] = {}
 
 
@@ -168,13 +168,12 @@ def _kernel_info(geoms: tuple) -> tuple | None:
     hit = _KERNEL_INFO.get(geoms, False)
     if hit is not False:
         return hit
-    from artipg.geometry.kernels import ARC_COLUMN, BOX_CODES, CODES
+    from artipg.geometry.kernels import ARC_COLUMN, CODES
 
     code = [CODES.get(g) for g in geoms]
     info = None
     if code and None not in code:
-        info = (np.array(code, dtype=np.int64), tuple(code), any(c in ARC_COLUMN for c in code),
-                max(code) >= len(BOX_CODES))
+        info = (np.array(code, dtype=np.int64), tuple(code), any(c in ARC_COLUMN for c in code))
     if len(_KERNEL_INFO) < 4096:  # template combinations: a few dozen
         _KERNEL_INFO[geoms] = info
     return info
@@ -210,8 +209,6 @@ class PrimitiveTable:
 
     def __init__(self, geoms: list[type], flat: np.ndarray, start: list[int], foff: list[int], order: np.ndarray,
                  prim_T: np.ndarray, prim_link: np.ndarray, prim_part: np.ndarray, part_semantic: np.ndarray):
-        rows = _Rows(flat, start, foff, order, prim_T, prim_link, prim_part)
-        self.groups = [_Group(rows, geom, g) for g, geom in enumerate(geoms)]
         self._geoms = tuple(geoms)
         self._flat = flat
         self._start = start
@@ -222,6 +219,13 @@ class PrimitiveTable:
         self.prim_link = prim_link
         self.prim_part = prim_part
         self.part_semantic = part_semantic
+
+    @cached_property
+    def groups(self) -> list[_Group]:
+        """One :class:`_Group` per geometry template, in order of first appearance (made
+        when first read: the sampling path reads the packed arrays instead)."""
+        rows = _Rows(self._flat, self._start, self._foff, self._order, self.prim_T, self.prim_link, self.prim_part)
+        return [_Group(rows, geom, g) for g, geom in enumerate(self._geoms)]
 
     @classmethod
     def of(cls, obj) -> "PrimitiveTable":
@@ -285,7 +289,7 @@ class PrimitiveTable:
         info = _kernel_info(self._geoms)
         if info is None:
             return None
-        code, _, arcs, _ = info
+        code, _, arcs = info
         flat = self._flat
         # the arcs of rings and tori are the only parameters whose cos and sin are read
         trig = (np.cos(flat), np.sin(flat)) if arcs else (flat, flat)
@@ -420,11 +424,13 @@ class PrimitiveTable:
         return a / a.sum()
 
     # ------------------------------------------------------------ frames and boxes
-    def shift_root(self, S: np.ndarray) -> None:
-        """Apply object-frame transform ``S`` to every root-link primitive."""
+    def shift_root(self, S: np.ndarray, moved: np.ndarray | None = None) -> None:
+        """Apply object-frame transform ``S`` to every root-link primitive; ``moved``, when
+        given, is the product ``S @ prim_T[:n]`` (n, 4, 4) already computed (n root
+        primitives)."""
         n = self._n_root
-        self.prim_T[:n] = S @ self.prim_T[:n]
-        for g in self.groups:
+        self.prim_T[:n] = S @ self.prim_T[:n] if moved is None else moved
+        for g in self.__dict__.get("groups", ()):
             g.__dict__.pop("T", None)
 
     @cached_property
@@ -451,11 +457,9 @@ class PrimitiveTable:
         k = _kernels()
         out = np.empty((self.n_prims, 2, 3))
         ch = np.empty((2, self.n_prims, 3))
-        k.local_boxes(*self._packed, out, ch)
-        info = _kernel_info(self._geoms)
-        if info[3]:  # prisms: bounds_batch needs numpy's cos
-            for g, c in zip(self.groups, info[1]):
-                if c >= len(k.BOX_CODES):
+        if not k.local_boxes(*self._packed, out, ch):  # a prism side count off the kernel's table
+            for g, c in zip(self.groups, _kernel_info(self._geoms)[1]):
+                if c == k.CODES[Prism]:
                     b = out[g.prim] = g.geom.bounds_batch(g.P)
                     ch[0, g.prim] = (b[:, 0] + b[:, 1]) * 0.5
                     ch[1, g.prim] = (b[:, 1] - b[:, 0]) * 0.5

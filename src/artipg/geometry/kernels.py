@@ -45,8 +45,9 @@ drop_stale_caches(__file__, [sys.modules[f"artipg.geometry.{m}"].__file__ for m 
 
 #: Template -> code used by the kernels; a template not listed takes the numpy path.
 CODES = {Cuboid: 0, RectRing: 1, Frustum: 2, Ring: 3, Sphere: 4, Torus: 5, Prism: 6, TriPrism: 7}
-#: Codes of the templates whose local boxes the kernel computes (the prisms' need numpy's cos).
-BOX_CODES = (0, 1, 2, 3, 4, 5)
+#: Codes of the templates whose local boxes :func:`local_boxes` computes: all (a prism's
+#: only for an integer side count 3..MAX_SIDES, from numpy's cosines in :data:`_PRISM_BOX`).
+BOX_CODES = (0, 1, 2, 3, 4, 5, 6, 7)
 #: Column of the arc parameter of the templates that have one (ring, torus), by code.
 ARC_COLUMN = {3: 3, 5: 2}
 _RING_ARC, _TORUS_ARC = ARC_COLUMN[3], ARC_COLUMN[5]
@@ -106,6 +107,12 @@ _SIDES_T = _sparse(np.concatenate([_RING_SIDES.T, np.zeros((32, 1))], 1))
 _FCAPS_T = _sparse(_FRUSTUM_CAPS)
 _RCAPS_T = _sparse(_RING_CAPS)
 _PRISM_TRIG = _prism_trig()
+#: Prism.bounds_batch of a unit radius and height for each side count n (rows 3..MAX_SIDES):
+#: the x and y extremes [n, lo/hi, x/y] are numpy's cosines and sines times 1.0 (exact),
+#: so r times them is bounds_batch's ``r * cos(...)``.
+_PRISM_BOX = np.zeros((MAX_SIDES + 1, 2, 2))
+_PRISM_BOX[3:] = Prism.bounds_batch(np.column_stack([np.ones(MAX_SIDES - 2), np.zeros(MAX_SIDES - 2),
+                                                     np.arange(3.0, MAX_SIDES + 1)]))[:, :, :2]
 #: Upper bound of the cells of one row of each template (code): buffer sizes of :func:`cells`.
 ROW_CELLS = tuple(int(k) for k in _CELLS.sum(axis=1))
 #: Parameters per cell row (:attr:`artipg.annotate.points.PrimitiveTable.cell_rows`).
@@ -204,6 +211,19 @@ def _min(a, b):
 def _max(a, b):
     """``np.maximum`` of two floats (NaN if either is)."""
     return a if a >= b or a != a else b
+
+
+@numba.njit(cache=True)
+def _np_min(a, b):
+    """``np.minimum(a, b)`` to the sign of a zero: NaN if either is, else ``b`` unless
+    ``a < b`` (so ``np.minimum(0.0, -0.0)`` is -0.0)."""
+    return a if a < b or a != a else b
+
+
+@numba.njit(cache=True)
+def _np_max(a, b):
+    """``np.maximum(a, b)`` to the sign of a zero (see :func:`_np_min`)."""
+    return a if a > b or a != a else b
 
 
 @numba.njit(cache=True)
@@ -578,15 +598,42 @@ def _arc_trig(C, S, trig, m, col, arc):
 
 @numba.njit(cache=True)
 def local_boxes(flat, foff, start, prim, code, cos_f, sin_f, out, ch):
-    """Write the local box (2, 3) of every primitive of the groups whose template is in
-    :data:`BOX_CODES` to ``out[prim]`` (N, 2, 3), the values of their ``bounds_batch``,
-    and its centre and half extents to ``ch[0, prim]``, ``ch[1, prim]`` ((2, N, 3), as
-    :func:`centre_half`). Arguments as for :func:`cells`."""
+    """Write the local box (2, 3) of every primitive to ``out[prim]`` (N, 2, 3), the
+    values of its template's ``bounds_batch``, and its centre and half extents to
+    ``ch[0, prim]``, ``ch[1, prim]`` ((2, N, 3), as :func:`centre_half`). Arguments as
+    for :func:`cells`.
+
+    Returns False when a prism has a side count outside the integers 3..MAX_SIDES (its
+    group's rows are then left for ``bounds_batch``), else True.
+    """
+    done = True
     for g in range(len(code)):
         s, e, c = start[g], start[g + 1], code[g]
-        if c >= len(BOX_CODES):  # the prisms (last codes)
-            continue
         P = _rows(flat, foff, start, g)
+        if c == 6:  # Prism: numpy's extremes for its side count, times r
+            for m in range(e - s):
+                r, h, n = P[m, 0], P[m, 1], P[m, 2]
+                if not (n >= 3 and n <= MAX_SIDES and n == int(n)):
+                    done = False
+                    break
+            if not done:
+                continue
+        if c >= 6:
+            for m in range(e - s):
+                i = prim[s + m]
+                p, b = P[m], out[i]
+                if c == 6:
+                    r, t = p[0], _PRISM_BOX[int(p[2])]
+                    b[0, 0], b[0, 1], b[1, 0], b[1, 1] = r * t[0, 0], r * t[0, 1], r * t[1, 0], r * t[1, 1]
+                    b[0, 2], b[1, 2] = -p[1] / 2, p[1] / 2
+                else:  # TriPrism
+                    w, t, a, d = p[0], p[1], p[2], p[3]
+                    b[0, 0], b[0, 1], b[0, 2] = _np_min(-w / 2, a), _np_min(0.0, t), -d / 2
+                    b[1, 0], b[1, 1], b[1, 2] = _np_max(w / 2, a), _np_max(0.0, t), d / 2
+                for k in range(3):
+                    ch[0, i, k] = (b[0, k] + b[1, k]) * 0.5
+                    ch[1, i, k] = (b[1, k] - b[0, k]) * 0.5
+            continue
         C = _rows(cos_f, foff, start, g)
         S = _rows(sin_f, foff, start, g)
         full = True  # every row a full turn (rings and tori)
@@ -633,6 +680,7 @@ def local_boxes(flat, foff, start, prim, code, cos_f, sin_f, out, ch):
             for k in range(3):
                 ch[0, i, k] = (b[0, k] + b[1, k]) * 0.5
                 ch[1, i, k] = (b[1, k] - b[0, k]) * 0.5
+    return done
 
 
 @numba.njit(cache=True)

@@ -173,7 +173,7 @@ class ArticulatedObject:
 
     def link_poses(self, qpos=None) -> np.ndarray:
         """Pose (L, 4, 4) of every link in the object frame at joint state ``qpos``."""
-        q = self.qpos_dict(qpos)
+        q = self.qpos_dict(qpos) if qpos is not None else None
         links = self.links
         T = np.empty((len(links), 4, 4))
         T[0] = IDENTITY

@@ -187,18 +187,21 @@ class ObjectBuilder:
             S = translation(-((x0 + x1) / 2.0), -((y0 + y1) / 2.0), -z0)
             root = links[0]
             kids = [j for j in obj.joints if j.parent == root.name]
-            # one stacked product (the same 4x4 products); the poses become its slices
-            n = len(root.parts)
-            if n or kids:
-                moved = S @ _stack([part.pose for part in root.parts] + [j.origin for j in kids])
-                for part, T in zip(root.parts, moved):
-                    part.pose = T
-                for j, T in zip(kids, moved[n:]):
-                    j.origin = T
-            obj.primitive_table.shift_root(S)
+            table = obj.primitive_table
+            # one stacked product (the same 4x4 products) for the root parts, the joints on
+            # the root and the root primitives; the poses become its slices
+            n, m = len(root.parts), len(kids)
+            moved = S @ _stack([part.pose for part in root.parts] + [j.origin for j in kids]
+                               + [table.prim_T[:table._n_root].reshape(-1, 4)])
+            for part, T in zip(root.parts, moved):
+                part.pose = T
+            for j, T in zip(kids, moved[n:]):
+                j.origin = T
+            table.shift_root(S, moved[n + m:])
         return obj
 
 
 def _stack(poses: list) -> np.ndarray:
-    """(n, 4, 4) array of (4, 4) poses (concatenating is faster than np.array)."""
+    """(n, 4, 4) array of (4, 4) poses and (4 k, 4) stacks of poses (concatenating is
+    faster than np.array)."""
     return np.concatenate(poses).reshape(-1, 4, 4)
