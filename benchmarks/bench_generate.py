@@ -5,9 +5,9 @@ Prints, per category, the median milliseconds per object for
 disk (URDF, meshes, semantics, annotation, points), and the objects/second of
 ``artipg generate -n N --workers 2`` end to end (CLI, process pool, disk).
 It also times the issue's yardstick, a plain numpy loop that builds a 13-box cabinet and
-samples 2048 labelled points (``reference_cabinet.py``), before and after the categories,
-and prints each category's (b) as a multiple of it: on a shared machine whose speed
-drifts by 10-20 % the ratio moves less than the milliseconds.
+samples 2048 labelled points (``reference_cabinet.py``), alternating with (b) object by
+object, and prints each category's (b) as a multiple of it: on a shared machine whose
+speed drifts by 10-20 % the ratio moves less than the milliseconds.
 (b) is split into where its time goes: the patch table of the object (built once per
 object, cached) and the draw of 2048 points from it; the rest is (a).
 
@@ -45,6 +45,22 @@ def _median_ms(fn, seeds) -> float:
     return 1e3 * float(np.median(times))
 
 
+def _paired_median_ms(fn, ref, seeds) -> tuple[float, float, float]:
+    """Median ms of ``fn(s)`` and of ``ref(s)``, called alternately seed by seed (so a
+    drift of the machine's speed reaches both), and the median of their paired ratios."""
+    a, b = [], []
+    for s in seeds:
+        t0 = CLOCK()
+        fn(s)
+        t1 = CLOCK()
+        ref(s)
+        t2 = CLOCK()
+        a.append(t1 - t0)
+        b.append(t2 - t1)
+    a, b = np.array(a), np.array(b)
+    return 1e3 * float(np.median(a)), 1e3 * float(np.median(b)), float(np.median(a / b))
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--categories", nargs="*", default=None)
@@ -64,9 +80,9 @@ def main() -> None:
           f"({args.export_seeds} for export), one process, {args.clock} clock")
     for s in range(5):
         reference_object(s)
-    ref = [_median_ms(reference_object, seeds)]
-    print(f"reference (plain numpy 13-box cabinet + 2048 labelled points): {ref[0]:.3f} ms")
-    print(f"{'category':<20}{'(a) gen ms':>12}{'(b) +2048 pts ms':>18}{'(b)/ref':>8}{'patches':>9}{'draw':>7}"
+    refs, ratios = [], []
+    print("ref: the reference (plain numpy 13-box cabinet + 2048 labelled points), timed alternately with (b)")
+    print(f"{'category':<20}{'(a) gen ms':>12}{'(b) +2048 pts ms':>18}{'ref ms':>8}{'(b)/ref':>8}{'patches':>9}{'draw':>7}"
           f"{'(c) export ms':>15}{'joints mean/median/max':>26}")
     worst_b = 0.0
     all_dof = []
@@ -74,7 +90,10 @@ def main() -> None:
         for s in range(5):  # warm caches and imports
             artipg.generate(c, s).sample_points(2048)
         a = _median_ms(lambda s: artipg.generate(c, s), seeds)
-        b = _median_ms(lambda s: artipg.generate(c, s).sample_points(2048), seeds)
+        b, ref, ratio = _paired_median_ms(lambda s: artipg.generate(c, s).sample_points(2048), reference_object,
+                                          seeds)
+        refs.append(ref)
+        ratios.append(ratio)
         objs = {s: artipg.generate(c, s) for s in seeds}
         patches = _median_ms(lambda s: objs[s].primitive_table.families, seeds)
         draw = _median_ms(lambda s: objs[s].sample_points(2048), seeds)
@@ -84,10 +103,9 @@ def main() -> None:
         all_dof.append(dof)
         worst_b = max(worst_b, b)
         joints = f"{dof.mean():.1f} / {np.median(dof):.0f} / {dof.max()}"
-        print(f"{c:<20}{a:>12.3f}{b:>18.3f}{b / ref[0]:>8.2f}{patches:>9.3f}{draw:>7.3f}{e:>15.1f}{joints:>26}")
-    ref.append(_median_ms(reference_object, seeds))
-    print(f"worst median (b): {worst_b:.3f} ms per object; reference {ref[0]:.3f} ms before the "
-          f"categories, {ref[1]:.3f} ms after")
+        print(f"{c:<20}{a:>12.3f}{b:>18.3f}{ref:>8.3f}{ratio:>8.2f}{patches:>9.3f}{draw:>7.3f}{e:>15.1f}{joints:>26}")
+    print(f"worst median (b): {worst_b:.3f} ms per object; worst (b)/ref: {max(ratios):.2f}; "
+          f"reference {min(refs):.3f}-{max(refs):.3f} ms (median {np.median(refs):.3f})")
     dof = np.concatenate(all_dof)
     print(f"movable joints over all categories: mean {dof.mean():.2f}, median {np.median(dof):.0f}, "
           f"{100 * (dof >= 10).mean():.1f}% of objects with 10 or more")
