@@ -467,6 +467,77 @@ def blocked_rows(parent, origin, jtype, axis, Q, desc, link, T, center, half, pj
 
 
 @numba.njit(cache=True)
+def blocked_table(bad, sw_scene, sw_joint, sw_q, sw_b, movable, link, parent, not_fixed, jtype, limits, desc):
+    """:func:`artipg.validate.checks._blockers` and the joint values of
+    :func:`artipg.validate.checks._needs_open` for the colliding sweep rows ``bad``.
+
+    Returns ``(row_pair, pj, pk, Q, pS)``: the index of each bad row's (moving joint,
+    blocking joint) pair, -1 when it has no blocker; the pairs' link indices in order
+    of first occurrence; their joint values (S, L) (the moving joint's sweep values,
+    ``sw_q`` of its scenes, the blocking joint at the upper end of its range, as
+    :meth:`artipg.validate.kinematics.Kinematics.open_values` at 1.0) and the rows
+    of each pair."""
+    L = len(parent)
+    n = len(bad)
+    blocker = np.full((L, L), -2, dtype=np.int64)  # (moving joint, link): not yet known
+    pair_of = np.full((L, L), -1, dtype=np.int64)
+    row_pair = np.full(n, -1, dtype=np.int64)
+    pj = np.empty(n, dtype=np.int64)
+    pk = np.empty(n, dtype=np.int64)
+    P = 0
+    for r in range(n):
+        s = bad[r]
+        j = movable[sw_joint[sw_scene[s]]]
+        lb = link[sw_b[s]]
+        k = blocker[j, lb]
+        if k == -2:  # checks._blocker: the movable joint closest to the root j does not ride on
+            k = -1
+            x = lb
+            while x > 0:
+                if not_fixed[x] and not desc[x, j]:
+                    k = x
+                x = parent[x]
+            blocker[j, lb] = k
+        if k > 0:
+            if pair_of[j, k] < 0:
+                pair_of[j, k] = P
+                pj[P], pk[P] = j, k
+                P += 1
+            row_pair[r] = pair_of[j, k]
+    # the scenes of each movable joint are consecutive in the sweep table
+    first = np.zeros(L, dtype=np.int64)
+    count = np.zeros(L, dtype=np.int64)
+    for s in range(len(sw_joint) - 1, -1, -1):
+        i = movable[sw_joint[s]]
+        first[i] = s
+        count[i] += 1
+    pS = np.empty(P, dtype=np.int64)
+    for p in range(P):
+        pS[p] = count[pj[p]]
+    Q = np.zeros((pS.sum(), L))
+    row = 0
+    for p in range(P):
+        j, k = pj[p], pk[p]
+        up = 1.0 * np.pi if jtype[k] == 3 else limits[k, 0] + 1.0 * (limits[k, 1] - limits[k, 0])
+        for s in range(pS[p]):
+            Q[row + s, j] = sw_q[first[j] + s]
+            Q[row + s, k] = up
+        row += pS[p]
+    return row_pair, pj[:P].copy(), pk[:P].copy(), Q, pS
+
+
+@numba.njit(cache=True)
+def needs_open_rows(bad, sw_scene, sw_joint, sw_q, sw_b, movable, parent, not_fixed, jtype, limits, origin, axis,
+                    desc, link, T, center, half, pad):
+    """:func:`blocked_table` and :func:`blocked_rows` in one call: ``(row_pair, pj,
+    pk, a, b, Wa, Wb, owner)``."""
+    row_pair, pj, pk, Q, pS = blocked_table(bad, sw_scene, sw_joint, sw_q, sw_b, movable, link, parent, not_fixed,
+                                            jtype, limits, desc)
+    A, B, WA, WB, owner = blocked_rows(parent, origin, jtype, axis, Q, desc, link, T, center, half, pj, pk, pS, pad)
+    return row_pair, pj, pk, A, B, WA, WB, owner
+
+
+@numba.njit(cache=True)
 def _grow_frames(x):
     y = np.empty((2 * len(x), 4, 4))
     for i in range(len(x)):
