@@ -409,7 +409,9 @@ def blocked_rows(parent, origin, jtype, axis, Q, desc, link, T, center, half, pj
     """The pairs of :func:`artipg.validate.checks._needs_open`: for each (moving joint
     ``pj``, blocking joint ``pk``) link pair and its ``pS`` rows of ``Q``, the pieces
     only the first moves against those only the second moves, where their boxes
-    overlap; ``(a, b, Wa, Wb, owner)`` in the numpy code's order."""
+    overlap; ``(a, b, Wa, Wb, owner)`` in the numpy code's order. The rows of a pair
+    differ in the moving joint's value only, and it does not ride on the blocking
+    joint (nor this on it), as in ``_needs_open``."""
     P = poses_batch(parent, origin, jtype, axis, Q)
     M = len(link)
     n = 0
@@ -442,7 +444,10 @@ def blocked_rows(parent, origin, jtype, axis, Q, desc, link, T, center, half, pj
         c = np.empty((S, na + nb, 3))
         h = np.empty((S, na + nb, 3))
         for s in range(S):
-            for x in range(na + nb):
+            # the pieces only k moves sit at the same pose in every row of the pair
+            # (its joint value is the same in all, the moving joint is not above them):
+            # the same products give the same bits, computed once
+            for x in range(na + nb if s == 0 else na):
                 m = both[x]
                 matmul4(P[rows + s, link[m]], T[m], W[s, x])
                 for i in range(3):
@@ -453,14 +458,14 @@ def blocked_rows(parent, origin, jtype, axis, Q, desc, link, T, center, half, pj
         for s in range(S):
             for x in range(na):
                 for y in range(na, na + nb):
-                    if not _overlap(c[s, x], h[s, x], c[s, y], h[s, y], pad):
+                    if not _overlap(c[s, x], h[s, x], c[0, y], h[0, y], pad):
                         continue
                     if n == len(A):
                         A, B, own = grow(A), grow(B), grow(own)
                         WA, WB = _grow_frames(WA), _grow_frames(WB)
                     A[n], B[n], own[n] = both[x], both[y], p
                     copy4(W[s, x], WA[n])
-                    copy4(W[s, y], WB[n])
+                    copy4(W[0, y], WB[n])
                     n += 1
         rows += S
     return A[:n].copy(), B[:n].copy(), WA[:n].copy(), WB[:n].copy(), own[:n].copy()
