@@ -380,11 +380,54 @@ def test_compiled_blocked_joint_rows_equal_numpy():
         checks._blocked_rows = original
         compiled.ENABLED = saved
     assert calls
+    found = 0
     for kin, pieces, pairs, Qs in calls:
-        got = blocked_rows(kin.parent, kin.origin, kin.type_codes, kin.axis, np.concatenate(Qs), kin.descendants,
-                           pieces.link, pieces.T, pieces.center, pieces.half, np.array([j for j, _ in pairs]),
-                           np.array([k for _, k in pairs]), np.array([len(Q) for Q in Qs]), -_OVERLAP)
-        assert _bytes(*got) == _bytes(*original(kin, pieces, pairs, Qs))
+        # as recorded (blockers open: mostly no overlap left), and with the blockers
+        # closed or half open (overlaps: the rows and frames are compared too)
+        for scale in (1.0, 0.0, 0.5):
+            Qk = [Q.copy() for Q in Qs]
+            for Q, (_, k) in zip(Qk, pairs):
+                Q[:, k] *= scale
+            got = blocked_rows(kin.parent, kin.origin, kin.type_codes, kin.axis, np.concatenate(Qk),
+                               kin.descendants, pieces.link, pieces.T, pieces.center, pieces.half,
+                               np.array([j for j, _ in pairs]), np.array([k for _, k in pairs]),
+                               np.array([len(Q) for Q in Qk]), -_OVERLAP)
+            assert _bytes(*got) == _bytes(*original(kin, pieces, pairs, Qk))
+            found += len(got[0])
+    assert found
+
+
+def test_compiled_blockers_and_open_depths_equal_numpy():
+    """The blockers of colliding sweep rows, their (moving, blocking) joint pairs, the
+    pairs' depths with the blocker open and each row's pair (``checks._needs_open``),
+    recorded from real checks, with the kernel and with numpy."""
+    import artipg.validate.checks as checks
+
+    calls = []
+    original = checks._needs_open
+
+    def record(kin, pieces, sw, tol, bad):
+        out = original(kin, pieces, sw, tol, bad)
+        calls.append((kin, pieces, sw, tol, bad, out))
+        return out
+
+    checks._needs_open = record
+    try:
+        for category in ("dishwasher", "washing_machine", "oven", "storage_furniture"):
+            for seed in range(3):
+                for obj in _variants(category, seed):
+                    check_object(obj)
+    finally:
+        checks._needs_open = original
+    assert calls and any(len(out[0]) for *_, out in calls)
+    saved = compiled.ENABLED
+    compiled.ENABLED = False
+    try:
+        for kin, pieces, sw, tol, bad, (pairs, depth, row_pair) in calls:
+            ref = original(kin, pieces, sw, tol, bad)
+            assert pairs == ref[0] and _bytes(depth, row_pair) == _bytes(ref[1], ref[2])
+    finally:
+        compiled.ENABLED = saved
 
 
 # ---------------------------------------------------------------- reports

@@ -432,39 +432,48 @@ def _blockers(kin, pieces, sw, bad):
     return j, k
 
 
-def _needs_open(kin, pieces, sw, tol, blockers) -> dict:
+def _needs_open(kin, pieces, sw, tol, bad):
     """Sweep collisions with a part that another joint moves (a rack behind a
-    dishwasher door): re-checked with that joint open; returns {(j, k): depth} of
-    the (moving joint, blocking joint) link indices, depth < 0 when opening k clears
-    the way for j. All (j, k) pairs share one batch of poses and one distance pass.
-    ``blockers``: :func:`_blockers` of the colliding sweep rows."""
-    j, k = blockers
-    sel = k > 0
-    j, k = j[sel], k[sel]
-    first = np.sort(np.unique(j * kin.n_links + k, return_index=True)[1])  # in order of first occurrence
-    pairs = list(zip(j[first].tolist(), k[first].tolist()))
-    if not pairs:
-        return {}
-    up = kin.open_values(1.0)
-    Qs = []
-    for j, k in pairs:
-        qs = kin.sweep_values(j, tol.sweep_poses)
-        Q = np.zeros((len(qs), kin.n_links))
-        Q[:, j], Q[:, k] = qs, up[kin.joint_names[k]]
-        Qs.append(Q)
-    if compiled.ENABLED and _kernels_match():
-        from artipg.validate.jit_scenes import blocked_rows
+    dishwasher door): re-checked with that joint open. All (moving joint, blocking
+    joint) pairs share one batch of poses and one distance pass.
 
-        A, B, Wa, Wb, owner = blocked_rows(kin.parent, kin.origin, kin.type_codes, kin.axis, np.concatenate(Qs),
-                                           kin.descendants, pieces.link, pieces.T, pieces.center, pieces.half,
-                                           np.array([j for j, _ in pairs]), np.array([k for _, k in pairs]),
-                                           np.array([len(Q) for Q in Qs]), -_OVERLAP)
+    Returns ``(pairs, depth, row_pair)``: the (j, k) link index pairs of the colliding
+    sweep rows ``bad`` with a blocker (:func:`_blocker`), in order of first occurrence;
+    the deepest penetration (P,) of each with k open (< 0: opening k clears the way for
+    j; 0 where no pair of pieces overlaps); the index into ``pairs`` of each bad row
+    (-1: no blocker)."""
+    if compiled.ENABLED and _kernels_match():
+        from artipg.validate.jit_scenes import needs_open_rows
+
+        row_pair, pj, pk, A, B, Wa, Wb, owner = needs_open_rows(
+            bad, sw["scene"], sw["joint"], sw["q"], sw["b"], sw["movable"], kin.parent, kin.not_fixed,
+            kin.type_codes, kin.limits, kin.origin, kin.axis, kin.descendants, pieces.link, pieces.T, pieces.center,
+            pieces.half, -_OVERLAP)
+        pairs = list(zip(pj.tolist(), pk.tolist()))
     else:
+        j, k = _blockers(kin, pieces, sw, bad)
+        sel = (k > 0).nonzero()[0]
+        keys, first, inv = np.unique(j[sel] * kin.n_links + k[sel], return_index=True, return_inverse=True)
+        order = np.argsort(first)  # in order of first occurrence
+        rank = np.empty(len(order), dtype=np.int64)
+        rank[order] = np.arange(len(order))
+        row_pair = np.full(len(bad), -1, dtype=np.int64)
+        row_pair[sel] = rank[inv.reshape(-1)]
+        pairs = [(int(x) // kin.n_links, int(x) % kin.n_links) for x in keys[order]]
+        if not pairs:
+            return pairs, np.zeros(0), row_pair
+        up = kin.open_values(1.0)
+        Qs = []
+        for j, k in pairs:
+            qs = kin.sweep_values(j, tol.sweep_poses)
+            Q = np.zeros((len(qs), kin.n_links))
+            Q[:, j], Q[:, k] = qs, up[kin.joint_names[k]]
+            Qs.append(Q)
         A, B, Wa, Wb, owner = _blocked_rows(kin, pieces, pairs, Qs)
-    d = pair_distance(pieces, A, B, Wa, Wb, 0.0)
     worst = np.full(len(pairs), -np.inf)
-    np.maximum.at(worst, owner, -d)
-    return {jk: float(w) if np.isfinite(w) else 0.0 for jk, w in zip(pairs, worst)}
+    if len(A):
+        np.maximum.at(worst, owner, -pair_distance(pieces, A, B, Wa, Wb, 0.0))
+    return pairs, np.where(np.isfinite(worst), worst, 0.0), row_pair
 
 
 def _blocked_rows(kin, pieces, pairs, Qs):
@@ -504,14 +513,13 @@ def _sweep_result(kin, pieces, sw, opens, tol) -> CheckResult:
     if len(bad):
         # a collision with a part another joint moves is no fault when opening that
         # joint clears the way (racks behind a door): keep the rest
-        bj, bk = _blockers(kin, pieces, sw, bad)
-        deps = _needs_open(kin, pieces, sw, tol, (bj, bk))
-        cleared = {jk for jk, depth in deps.items() if depth <= tol.penetration}
-        if cleared:
+        pairs, depth, row_pair = _needs_open(kin, pieces, sw, tol, bad)
+        clear = depth <= tol.penetration
+        if clear.any():
+            cleared = [pairs[p] for p in clear.nonzero()[0].tolist()]
             info["needs_open"] = {kin.joint_names[j]: sorted(kin.joint_names[k] for jj, k in cleared if jj == j)
                                   for j in sorted({j for j, _ in cleared})}
-            L = kin.n_links
-            bad = bad[~((bk > 0) & np.isin(bj * L + bk, [j * L + k for j, k in cleared]))]
+            bad = bad[~np.append(clear, False)[row_pair]]  # row_pair -1: the appended False
             worst = max(0.0, float(-D[bad].min())) if len(bad) else 0.0
     if len(bad):
         joint = sw["joint"][sw["scene"][bad]]

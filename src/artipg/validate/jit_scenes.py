@@ -409,7 +409,9 @@ def blocked_rows(parent, origin, jtype, axis, Q, desc, link, T, center, half, pj
     """The pairs of :func:`artipg.validate.checks._needs_open`: for each (moving joint
     ``pj``, blocking joint ``pk``) link pair and its ``pS`` rows of ``Q``, the pieces
     only the first moves against those only the second moves, where their boxes
-    overlap; ``(a, b, Wa, Wb, owner)`` in the numpy code's order."""
+    overlap; ``(a, b, Wa, Wb, owner)`` in the numpy code's order. The rows of a pair
+    differ in the moving joint's value only, and it does not ride on the blocking
+    joint (nor this on it), as in ``_needs_open``."""
     P = poses_batch(parent, origin, jtype, axis, Q)
     M = len(link)
     n = 0
@@ -442,7 +444,10 @@ def blocked_rows(parent, origin, jtype, axis, Q, desc, link, T, center, half, pj
         c = np.empty((S, na + nb, 3))
         h = np.empty((S, na + nb, 3))
         for s in range(S):
-            for x in range(na + nb):
+            # the pieces only k moves sit at the same pose in every row of the pair
+            # (its joint value is the same in all, the moving joint is not above them):
+            # the same products give the same bits, computed once
+            for x in range(na + nb if s == 0 else na):
                 m = both[x]
                 matmul4(P[rows + s, link[m]], T[m], W[s, x])
                 for i in range(3):
@@ -453,17 +458,88 @@ def blocked_rows(parent, origin, jtype, axis, Q, desc, link, T, center, half, pj
         for s in range(S):
             for x in range(na):
                 for y in range(na, na + nb):
-                    if not _overlap(c[s, x], h[s, x], c[s, y], h[s, y], pad):
+                    if not _overlap(c[s, x], h[s, x], c[0, y], h[0, y], pad):
                         continue
                     if n == len(A):
                         A, B, own = grow(A), grow(B), grow(own)
                         WA, WB = _grow_frames(WA), _grow_frames(WB)
                     A[n], B[n], own[n] = both[x], both[y], p
                     copy4(W[s, x], WA[n])
-                    copy4(W[s, y], WB[n])
+                    copy4(W[0, y], WB[n])
                     n += 1
         rows += S
     return A[:n].copy(), B[:n].copy(), WA[:n].copy(), WB[:n].copy(), own[:n].copy()
+
+
+@numba.njit(cache=True)
+def blocked_table(bad, sw_scene, sw_joint, sw_q, sw_b, movable, link, parent, not_fixed, jtype, limits, desc):
+    """:func:`artipg.validate.checks._blockers` and the joint values of
+    :func:`artipg.validate.checks._needs_open` for the colliding sweep rows ``bad``.
+
+    Returns ``(row_pair, pj, pk, Q, pS)``: the index of each bad row's (moving joint,
+    blocking joint) pair, -1 when it has no blocker; the pairs' link indices in order
+    of first occurrence; their joint values (S, L) (the moving joint's sweep values,
+    ``sw_q`` of its scenes, the blocking joint at the upper end of its range, as
+    :meth:`artipg.validate.kinematics.Kinematics.open_values` at 1.0) and the rows
+    of each pair."""
+    L = len(parent)
+    n = len(bad)
+    blocker = np.full((L, L), -2, dtype=np.int64)  # (moving joint, link): not yet known
+    pair_of = np.full((L, L), -1, dtype=np.int64)
+    row_pair = np.full(n, -1, dtype=np.int64)
+    pj = np.empty(n, dtype=np.int64)
+    pk = np.empty(n, dtype=np.int64)
+    P = 0
+    for r in range(n):
+        s = bad[r]
+        j = movable[sw_joint[sw_scene[s]]]
+        lb = link[sw_b[s]]
+        k = blocker[j, lb]
+        if k == -2:  # checks._blocker: the movable joint closest to the root j does not ride on
+            k = -1
+            x = lb
+            while x > 0:
+                if not_fixed[x] and not desc[x, j]:
+                    k = x
+                x = parent[x]
+            blocker[j, lb] = k
+        if k > 0:
+            if pair_of[j, k] < 0:
+                pair_of[j, k] = P
+                pj[P], pk[P] = j, k
+                P += 1
+            row_pair[r] = pair_of[j, k]
+    # the scenes of each movable joint are consecutive in the sweep table
+    first = np.zeros(L, dtype=np.int64)
+    count = np.zeros(L, dtype=np.int64)
+    for s in range(len(sw_joint) - 1, -1, -1):
+        i = movable[sw_joint[s]]
+        first[i] = s
+        count[i] += 1
+    pS = np.empty(P, dtype=np.int64)
+    for p in range(P):
+        pS[p] = count[pj[p]]
+    Q = np.zeros((pS.sum(), L))
+    row = 0
+    for p in range(P):
+        j, k = pj[p], pk[p]
+        up = 1.0 * np.pi if jtype[k] == 3 else limits[k, 0] + 1.0 * (limits[k, 1] - limits[k, 0])
+        for s in range(pS[p]):
+            Q[row + s, j] = sw_q[first[j] + s]
+            Q[row + s, k] = up
+        row += pS[p]
+    return row_pair, pj[:P].copy(), pk[:P].copy(), Q, pS
+
+
+@numba.njit(cache=True)
+def needs_open_rows(bad, sw_scene, sw_joint, sw_q, sw_b, movable, parent, not_fixed, jtype, limits, origin, axis,
+                    desc, link, T, center, half, pad):
+    """:func:`blocked_table` and :func:`blocked_rows` in one call: ``(row_pair, pj,
+    pk, a, b, Wa, Wb, owner)``."""
+    row_pair, pj, pk, Q, pS = blocked_table(bad, sw_scene, sw_joint, sw_q, sw_b, movable, link, parent, not_fixed,
+                                            jtype, limits, desc)
+    A, B, WA, WB, owner = blocked_rows(parent, origin, jtype, axis, Q, desc, link, T, center, half, pj, pk, pS, pad)
+    return row_pair, pj, pk, A, B, WA, WB, owner
 
 
 @numba.njit(cache=True)

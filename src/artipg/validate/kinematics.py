@@ -88,6 +88,11 @@ class Kinematics:
         return np.array([MOVABLE_CODES.get(t, 0) for t in self.joint_types], dtype=np.int64)
 
     @cached_property
+    def not_fixed(self) -> np.ndarray:
+        """Boolean (L,): the link's parent joint type is not ``fixed`` (the root's is)."""
+        return np.array([t != "fixed" for t in self.joint_types], dtype=bool)
+
+    @cached_property
     def continuous(self) -> np.ndarray:
         """Boolean (J,): the :meth:`movable` joint is continuous."""
         return np.array([self.joint_types[i] == "continuous" for i in self.movable()], dtype=bool)
