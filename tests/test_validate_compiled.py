@@ -204,6 +204,34 @@ def test_compiled_requests_give_every_piece_the_numpy_samples(category, numpy_pa
 
 # ---------------------------------------------------------------- pieces and tables
 
+def test_compiled_piece_flags_equal_the_numpy_ones():
+    """The pieces' flags from the kernel (jit_pieces._flags) equal Pieces._flags on
+    every template at and around its thresholds: whole and cut spheres, full and
+    partial rings and tori (arcs at 2 pi - 1e-9 and just below), frusta, boxes."""
+    from artipg.validate.jit_pieces import _flags
+    from artipg.validate.shapes import _CODES
+
+    rng = np.random.default_rng(3)
+    geoms, rows = [], []
+    for _ in range(40):
+        R = rng.uniform(0.01, 0.1)
+        cut = rng.choice([0.0, 0.3 * R, 1e-12])
+        geoms.append(Sphere)
+        rows.append([R, -R + rng.choice([0.0, cut]), R - rng.choice([0.0, cut]), 0.0, 0.0])
+        arc = rng.choice([TWO_PI, TWO_PI - 1e-9, TWO_PI - 2e-9, 1.0])
+        geoms += [Ring, Torus, Frustum, Cuboid]
+        rows += [[0.1, 0.08, 0.2, arc, 0.0], [0.1, 0.02, arc, 1.0, 1.0], [0.1, 0.05, 0.2, 1.0, 0.0],
+                 [0.1, 0.2, 0.3, 0.0, 0.0]]
+    M = len(geoms)
+    b = np.tile([[-0.1, -0.1, -0.1], [0.1, 0.1, 0.1]], (M, 1, 1))
+    p = Pieces(np.zeros(M, dtype=np.int64), np.arange(M), np.tile(np.eye(4), (M, 1, 1)), (b[:, 0] + b[:, 1]) / 2,
+               (b[:, 1] - b[:, 0]) / 2, geoms, np.array(rows), [str(i) for i in range(M)], np.zeros(M, dtype=np.int64),
+               0)
+    flags = _flags(p.params, p._kind, np.array([_CODES[g] for g in p._kinds], dtype=np.int64))
+    assert p.is_ball.any() and not p.is_ball.all() and p.symmetric.any() and not p.symmetric.all()
+    assert _bytes(*flags) == _bytes(p._code, p.is_box, p.is_ball, p.symmetric)
+
+
 @pytest.mark.parametrize("category", CATEGORIES)
 def test_compiled_pieces_and_tables_equal_the_numpy_ones(category, numpy_path):
     """Pieces.of (rectangular rings as four boxes) and the SDF tables, with sines
@@ -211,7 +239,8 @@ def test_compiled_pieces_and_tables_equal_the_numpy_ones(category, numpy_path):
     import artipg.validate.jit_contacts as jc
 
     def arrays(p):
-        return _bytes(p.link, p.part, p.T, p.center, p.half, p.params, p._kind, p.is_box, p.is_ball, p.symmetric)
+        return _bytes(p.link, p.part, p.T, p.center, p.half, p.params, p._kind, p._code, p.is_box, p.is_ball,
+                      p.symmetric)
 
     for seed in SEEDS:
         for obj in _variants(category, seed):
@@ -239,6 +268,9 @@ def test_kinematics_of_equals_a_link_by_link_construction():
             parent[i] = obj.link_index[link.joint.parent]
             origin[i], axis[i], limits[i] = link.joint.origin, link.joint.axis, link.joint.limits
         assert _bytes(kin.parent, kin.origin, kin.axis, kin.limits) == _bytes(parent, origin, axis, limits)
+        # the type codes and movable joints Kinematics.of fills in: the properties'
+        plain = Kinematics(kin.names, kin.parent, kin.joint_names, kin.joint_types, kin.origin, kin.axis, kin.limits)
+        assert _bytes(kin.type_codes, kin.movable()) == _bytes(plain.type_codes, plain.movable())
 
 
 # ---------------------------------------------------------------- scenes and distances

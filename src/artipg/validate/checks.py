@@ -28,7 +28,7 @@ from artipg.validate.contacts import (_DENSE, close_pairs, deepest_point, overla
                                       world_boxes)
 from artipg.validate.kinematics import Kinematics, rigid_inverse, rotations
 from artipg.validate.report import CheckResult, Issue
-from artipg.validate.shapes import Pieces
+from artipg.validate.shapes import Pieces, _kernels_match
 
 
 @dataclass(frozen=True)
@@ -99,13 +99,6 @@ def run_checks(kin: Kinematics, pieces: Pieces, tol: Tolerances = Tolerances()) 
         "floating": _floating(kin, pieces, W0, rest_s, tol),
         "joint_sweep": _sweep_result(kin, pieces, scenes[1], scenes[2:], tol),
     }
-
-
-def _kernels_match() -> bool:
-    """:func:`artipg.validate.jit_base.kernels_match` (imported on first use: numba)."""
-    from artipg.validate.jit_base import kernels_match
-
-    return kernels_match()
 
 
 def _scenes(kin, pieces, tol):

@@ -15,17 +15,24 @@ import numba
 import numpy as np
 
 from artipg.geometry.box import Cuboid, RectRing
+from artipg.geometry.revolve import Frustum, Ring, Sphere, Torus
 from artipg.kernel_cache import drop_stale_caches
 from artipg.validate.jit_base import apply, copy4
-from artipg.validate import jit_base
+from artipg.validate import jit_base, shapes
+from artipg.validate.shapes import _CODES
 
-drop_stale_caches(__file__, [jit_base.__file__])
+drop_stale_caches(__file__, [jit_base.__file__, shapes.__file__])
+
+# the template codes of Pieces' flags (constants of the kernel)
+_BOX, _FRUSTUM, _RING, _SPHERE, _TORUS = _CODES[Cuboid], _CODES[Frustum], _CODES[Ring], _CODES[Sphere], _CODES[Torus]
+_FULL_TURN = 2 * np.pi - 1e-9
 
 
-def pieces_arrays(table, local):
-    """``(link, part, T, center, half, params, kinds)`` of the pieces of a primitive
-    table (``local``: its primitives' local boxes (N, 2, 3)) as :meth:`Pieces.of`
-    makes them, ``kinds`` as ``Pieces(kinds=...)`` takes them."""
+def pieces_arrays(table, local, codes):
+    """``(link, part, T, center, half, params, kinds, flags)`` of the pieces of a
+    primitive table (``local``: its primitives' local boxes (N, 2, 3)) as
+    :meth:`Pieces.of` makes them, ``kinds`` and ``flags`` as ``Pieces(kinds=...,
+    flags=...)`` take them (``codes``: the templates' codes, ``shapes._CODES``)."""
     groups = table.groups
     index: dict = {}
     kind, ring, width = [], [], 0
@@ -44,14 +51,15 @@ def pieces_arrays(table, local):
             P[k:k + len(g.P), :g.P.shape[1]] = g.P
             k += len(g.P)
     sizes = np.array([len(g.P) for g in groups], dtype=np.int64)
-    link, part, T, center, half, params, kind_of = _assemble(
-        order, P, sizes, np.array(ring, dtype=np.bool_), np.array(kind, dtype=np.int64), width, table.prim_T,
-        table.prim_link, table.prim_part, local)
-    return link, part, T, center, half, params, (list(index), kind_of)
+    kind_code = np.array([codes.get(t, 0) for t in index], dtype=np.int64)
+    link, part, T, center, half, params, kind_of, code, is_box, is_ball, symmetric = _assemble(
+        order, P, sizes, np.array(ring, dtype=np.bool_), np.array(kind, dtype=np.int64), kind_code, width,
+        table.prim_T, table.prim_link, table.prim_part, local)
+    return link, part, T, center, half, params, (list(index), kind_of), (code, is_box, is_ball, symmetric)
 
 
 @numba.njit(cache=True)
-def _assemble(order, P, sizes, ring, kind, width, prim_T, prim_link, prim_part, local):
+def _assemble(order, P, sizes, ring, kind, kind_code, width, prim_T, prim_link, prim_part, local):
     N = len(order)
     M = 0
     g = 0
@@ -111,4 +119,30 @@ def _assemble(order, P, sizes, ring, kind, width, prim_T, prim_link, prim_part, 
                 center[m, c] = 0.5 * (lo + hi)
                 half[m, c] = 0.5 * (hi - lo)
             m += 1
-    return link, part, T, center, half, params, kind_of
+    code, is_box, is_ball, symmetric = _flags(params, kind_of, kind_code)
+    return link, part, T, center, half, params, kind_of, code, is_box, is_ball, symmetric
+
+
+@numba.njit(cache=True)
+def _flags(params, kind_of, kind_code):
+    """``Pieces._flags``: every piece's template code (``kind_code``: per template) and
+    whether it is a box, a whole ball, a full solid of revolution about its z axis."""
+    M = len(kind_of)
+    code = np.empty(M, dtype=np.int64)
+    is_box = np.empty(M, dtype=np.bool_)
+    is_ball = np.zeros(M, dtype=np.bool_)
+    symmetric = np.empty(M, dtype=np.bool_)
+    for m in range(M):
+        c = kind_code[kind_of[m]]
+        code[m] = c
+        is_box[m] = c == _BOX
+        sym = c == _FRUSTUM
+        if c == _SPHERE:
+            is_ball[m] = (params[m, 1] <= -params[m, 0]) and (params[m, 2] >= params[m, 0])
+            sym = True
+        elif c == _RING:
+            sym = params[m, 3] >= _FULL_TURN
+        elif c == _TORUS:
+            sym = params[m, 2] >= _FULL_TURN
+        symmetric[m] = sym
+    return code, is_box, is_ball, symmetric

@@ -18,6 +18,7 @@ MOVABLE = ("revolute", "prismatic", "continuous")
 #: Codes of the movable joint types (:attr:`Kinematics.type_codes`).
 MOVABLE_CODES = {"revolute": 1, "prismatic": 2, "continuous": 3}
 _I4 = np.eye(4)
+_ZERO3 = np.zeros(3)
 
 
 @dataclass
@@ -57,12 +58,17 @@ class Kinematics:
         L = len(obj.links)
         joints = [lk.joint for lk in obj.links[1:]]
         parent = np.array([-1] + [idx[j.parent] for j in joints], dtype=np.int64)
-        origin = np.concatenate([_I4] + [np.asarray(j.origin, dtype=float) for j in joints]).reshape(L, 4, 4)
-        axis = np.array([(0.0, 0.0, 0.0)] + [j.axis for j in joints], dtype=float).reshape(L, 3)
+        origin = np.concatenate([_I4] + [j.origin for j in joints], dtype=float).reshape(L, 4, 4)
+        axis = np.concatenate([_ZERO3] + [j.axis for j in joints], dtype=float).reshape(L, 3)
         limits = np.array([(0.0, 0.0)] + [j.limits for j in joints], dtype=float).reshape(L, 2)
         jn = [""] + [j.name for j in joints]
         jt = ["fixed"] + [j.type for j in joints]
-        return cls([lk.name for lk in obj.links], parent, jn, jt, origin, axis, limits)
+        kin = cls([lk.name for lk in obj.links], parent, jn, jt, origin, axis, limits)
+        # the cached type codes and movable joints, from the codes at hand
+        codes = [MOVABLE_CODES.get(t, 0) for t in jt]
+        kin.__dict__["type_codes"] = np.array(codes, dtype=np.int64)
+        kin.__dict__["_movable"] = np.array([i for i, c in enumerate(codes) if c], dtype=np.int64)
+        return kin
 
     @property
     def n_links(self) -> int:

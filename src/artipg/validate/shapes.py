@@ -74,10 +74,13 @@ class Pieces:
     kinds : tuple, optional
         The templates in order of first appearance and each piece's index into them
         ((M,) int64), instead of ``geom``.
+    flags : tuple, optional
+        ``(code, is_box, is_ball, symmetric)`` of the pieces ((M,) arrays) as this
+        class computes them (given by :func:`artipg.validate.jit_pieces.pieces_arrays`).
     """
 
     def __init__(self, link, part, T, center, half, geom, params, part_names, part_link, rng, meshes=None, *,
-                 kinds=None):
+                 kinds=None, flags=None):
         self.link = np.asarray(link, dtype=np.int64)
         self.part = np.asarray(part, dtype=np.int64)
         self.T = T
@@ -96,6 +99,20 @@ class Pieces:
         self._kinds, self._kind = kinds
         self._nparams = [len(g.params) if g is not None else 0 for g in self._kinds]
         M = len(self._kind)
+        if flags is not None:
+            self._code, self.is_box, self.is_ball, self.symmetric = flags
+        else:
+            self._flags(M)
+        self.symmetric_rows = self.symmetric.nonzero()[0]
+        self.start = np.zeros(M, dtype=np.int64)
+        self.count = np.zeros(M, dtype=np.int64)
+        self._drawn = np.zeros(M, dtype=bool)
+        self._chunks: list = []  # (3, n) blocks of samples, in drawing order
+        self._size = 0
+        self._points_t = np.zeros((3, 0))
+
+    def _flags(self, M: int) -> None:
+        """The template code, ``is_box``, ``is_ball`` and ``symmetric`` of every piece."""
         # template of every piece as a small code, for per-template flags
         code = np.array([_CODES.get(g, 0) for g in self._kinds] + [0], dtype=np.int64)[self._kind]
         self._code = code
@@ -114,13 +131,6 @@ class Pieces:
         if Torus in self._kinds:
             symmetric |= (code == _CODES[Torus]) & (self.params[:, 2] >= 2 * np.pi - 1e-9)
         self.symmetric = symmetric
-        self.symmetric_rows = self.symmetric.nonzero()[0]
-        self.start = np.zeros(M, dtype=np.int64)
-        self.count = np.zeros(M, dtype=np.int64)
-        self._drawn = np.zeros(M, dtype=bool)
-        self._chunks: list = []  # (3, n) blocks of samples, in drawing order
-        self._size = 0
-        self._points_t = np.zeros((3, 0))
 
     @property
     def geom(self) -> list:
@@ -326,8 +336,9 @@ class Pieces:
         if compiled.ENABLED and local is not None and table.groups and _kernels_match():
             from artipg.validate.jit_pieces import pieces_arrays
 
-            link, part, T, center, half, params, kinds = pieces_arrays(table, local)
-            return cls(link, part, T, center, half, None, params, part_names, obj.part_link, rng, kinds=kinds)
+            link, part, T, center, half, params, kinds, flags = pieces_arrays(table, local, _CODES)
+            return cls(link, part, T, center, half, None, params, part_names, obj.part_link, rng, kinds=kinds,
+                       flags=flags)
         index: dict = {}  # templates in order of appearance
         Ps, Ts, links, parts, boxes, kind = [], [], [], [], [], []
         for g in table.groups:
@@ -371,9 +382,16 @@ class Pieces:
 
 def _kernels_match() -> bool:
     """:func:`artipg.validate.jit_base.kernels_match` (imported on first use: numba)."""
-    from artipg.validate.jit_base import kernels_match
+    if not _KERNELS_MATCH:
+        from artipg.validate.jit_base import kernels_match
 
-    return kernels_match()
+        _KERNELS_MATCH.append(kernels_match)
+    return _KERNELS_MATCH[0]()
+
+
+#: :func:`artipg.validate.jit_base.kernels_match`, once imported (an import statement
+#: per call cost more than the probe's answer).
+_KERNELS_MATCH: list = []
 
 
 #: Small codes of the templates that get per-template flags (0: any other, meshes).
