@@ -29,6 +29,13 @@ _SUFFIX = tuple(f"_{k}" for k in range(64))
 _NSUFFIX = len(_SUFFIX)
 
 
+def _unique(names: dict[str, int], base: str) -> str:
+    """``base`` numbered by its earlier uses in ``names`` (which counts this one)."""
+    k = names.get(base, 0)
+    names[base] = k + 1
+    return base + _SUFFIX[k] if k < _NSUFFIX else f"{base}_{k}"
+
+
 class LinkBuilder:
     """A link under construction. Obtain one from :meth:`ObjectBuilder.create_link`.
 
@@ -53,11 +60,7 @@ class LinkBuilder:
         """
         shared = self._shared
         part.pose = pose
-        base = name or part.semantic
-        names = shared.names
-        k = names.get(base, 0)
-        names[base] = k + 1
-        part.name = base + _SUFFIX[k] if k < _NSUFFIX else f"{base}_{k}"
+        part.name = _unique(shared.names, name or part.semantic)
         record = shared.record
         if record is None:
             part.param_span = (0, 0)
@@ -142,12 +145,6 @@ class ObjectBuilder:
         self._links: list[LinkBuilder] = []
         self._shared = _Shared(record)
 
-    def _unique(self, base: str) -> str:
-        names = self._shared.names
-        k = names.get(base, 0)
-        names[base] = k + 1
-        return base + _SUFFIX[k] if k < _NSUFFIX else f"{base}_{k}"
-
     def create_link(self, name: str, parent: LinkBuilder | None = None) -> LinkBuilder:
         """A new link named ``name`` (made unique), child of ``parent`` (None: the root)."""
         links = self._links
@@ -156,10 +153,7 @@ class ObjectBuilder:
         # LinkBuilder(self, unique name, parent) without its __init__ call
         lb = _new(LinkBuilder)
         lb._shared = shared = self._shared
-        names = shared.names
-        k = names.get(name, 0)
-        names[name] = k + 1
-        lb.name = name = name + _SUFFIX[k] if k < _NSUFFIX else f"{name}_{k}"
+        lb.name = name = _unique(shared.names, name)
         lb.parent = parent
         lb.link = Link(name)
         links.append(lb)
