@@ -15,8 +15,8 @@ Sizes (metres): 0.1-0.45 tall; spouts reach 0.06-0.25 forward.
 
 from __future__ import annotations
 
+import copy
 import math
-from dataclasses import replace
 
 from artipg.geometry.transforms import rot_y, rot_z, translation
 from artipg.rules import Category, Slot
@@ -79,10 +79,12 @@ def levers(ctx):
         tmpl = ctx.choose("handle", VALVE_HANDLES)
         turn = p.uniform("turn", 1.2, 1.6)
         h0 = tmpl(p.scope("handle"), max_reach=valves[0][2])
-        for i, (T, s, _) in enumerate(valves):  # a matching pair: the second handle is a copy of the first
+        # a matching pair: the second handle is a copy of the first (copy.copy, unlike dataclasses.replace,
+        # leaves the template's grasps unbuilt)
+        for i, (T, s, _) in enumerate(valves):
             link = b.create_link("lever", root)
             link.set_joint("revolute", T, axis=(0.0, 0.0, -s), limits=(0.0, turn))
-            link.add(replace(h0) if i else h0)
+            link.add(copy.copy(h0) if i else h0)
         return valves[0][0][2, 3] + span(h0.primitives, 2)[1] - top[2, 3]  # handle tops above the spout hub
     lv = side_lever(p)
     zm = -p.uniform("lever_drop", 0.012, 0.025)

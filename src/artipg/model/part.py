@@ -64,6 +64,34 @@ class Grasp:
         d["pose"] = pose
         d["width"] = width
         d["open_dir"] = _zeros(3) if open_dir is _FACTORY else open_dir
+
+
+class Deferred:
+    """``fn(*args)``, computed on the first call and then kept.
+
+    Knowledge that generation and point sampling never read (grasps) is passed to
+    :class:`Part` as a ``Deferred`` and built when first asked for. The arguments are
+    kept until then, so they must not be mutated in between (pass numbers, or arrays no
+    one changes). Copies of a part share the ``Deferred``, hence the one list it builds.
+    """
+
+    __slots__ = ("fn", "args", "value")
+
+    def __init__(self, fn, *args):
+        self.fn, self.args, self.value = fn, args, None
+
+    def __call__(self):
+        if self.fn is not None:
+            self.value = self.fn(*self.args)
+            self.fn = self.args = None
+        return self.value
+
+    @classmethod
+    def one(cls, fn, *args) -> "Deferred":
+        """The one-item list ``[fn(*args)]``, deferred (a part with a single grasp)."""
+        return cls(_one, fn, args)
+
+
 _AFFORDANCE_SET = frozenset(AFFORDANCES)
 
 
@@ -88,7 +116,9 @@ class Part:
     size : (3,) ndarray or None
         Extents along the canonical axes; derived from the primitives when None.
     grasps : list of Grasp
-        Grasp poses defined on the template.
+        Grasp poses defined on the template. The constructor (and assignment) also
+        takes a zero-argument callable returning that list, such as a
+        :class:`Deferred`: it is called when ``grasps`` is first read.
     actionable : str
         GAPartNet actionable class or ``"none"``.
     name : str
@@ -138,11 +168,20 @@ class Part:
         self.regions = regions
         self.canonical = canonical
         self.size = size
-        self.grasps = [] if grasps is _FACTORY else grasps
+        if grasps is _FACTORY:
+            grasps = []
+        elif grasps.__class__ is not list and _pending(grasps):
+            grasps = Deferred(grasps)
+        self._grasps = grasps
         self.actionable = actionable
         self.name = name
         self.pose = pose
         self.param_span = param_span
+
+    def grasp_source(self):
+        """The grasp list, or the :class:`Deferred` that will build it (left unbuilt):
+        to give another part the same grasps, or derive them, without building them."""
+        return self._grasps
 
     def bounds(self) -> np.ndarray:
         """Bounding box (2, 3) of the part in its own frame."""
@@ -161,3 +200,27 @@ class Part:
     def anchor(self, name: str) -> np.ndarray:
         """Anchor ``name`` (3,) in the part frame."""
         return np.asarray(self.anchors[name], dtype=float)
+
+
+def _one(fn, args) -> list:
+    return [fn(*args)]
+
+
+def _pending(grasps) -> bool:
+    return grasps.__class__ is not Deferred and callable(grasps)
+
+
+def _get_grasps(self) -> list:
+    g = self._grasps
+    if g.__class__ is Deferred:
+        g = self._grasps = g()
+    return g
+
+
+def _set_grasps(self, grasps) -> None:
+    self._grasps = Deferred(grasps) if _pending(grasps) else grasps
+
+
+# after the class is made: the dataclass keeps ``grasps`` as a field (fields(), repr,
+# dataclasses.replace read it through this property, which builds pending grasps)
+Part.grasps = property(_get_grasps, _set_grasps, doc="Grasp poses defined on the template (list of Grasp).")

@@ -18,7 +18,7 @@ import numpy as np
 
 from artipg.geometry import cuboid, cuboid_between, cylinder, rect_ring
 from artipg.geometry.transforms import Placer, rot_y, translation
-from artipg.model.part import Part, Region
+from artipg.model.part import Deferred, Part, Region
 from artipg.templates.panels import door_edge_grasps
 
 _FRAME_TO_X = Placer(rot_y(np.pi / 2))  # rect ring's z (thickness) -> x
@@ -113,7 +113,8 @@ def window_door(p, width: float, height: float, thickness: float | None = None, 
     return Part("door", "window_door", prims,
                 anchors={"edge_+y": (-t, width / 2, 0.0), "edge_-y": (-t, -width / 2, 0.0),
                          "edge_+z": (-t, 0.0, height / 2), "edge_-z": (-t, 0.0, -height / 2), "front": (-t, 0.0, 0.0)},
-                regions={"push": Region(("panel", "glass"), front)}, grasps=door_edge_grasps(t, width, height),
+                regions={"push": Region(("panel", "glass"), front)},
+                grasps=Deferred(door_edge_grasps, t, width, height),
                 actionable="hinge_door")
 
 

@@ -24,7 +24,7 @@ import math
 
 from artipg.geometry import cylinder, frustum, ring
 from artipg.geometry.transforms import Placer, rot_y, translation
-from artipg.model.part import Part, Region
+from artipg.model.part import Deferred, Part, Region
 from artipg.templates.levers import top_grasp
 
 #: Radial clearance (metres) between a cap's skirt and the neck, or a stopper / stem and
@@ -69,7 +69,7 @@ def stopper_top(p, builder, parent, pose, neck):
     prims = [frustum(head_r, head_r * p.uniform("head_taper", 0.85, 1.0), hh, translation(0, 0, hh / 2), role="head"),
              cylinder(bore - CLEAR, shank, translation(0, 0, -shank / 2), role="shank")]
     part = Part("cap", "stopper", prims, regions={"grasp": Region(("head",)), "pull": Region(("head",))},
-                grasps=[top_grasp(0.0, 0.0, hh / 2, 2 * head_r + 0.02, "x")], actionable="slider_lid")
+                grasps=Deferred.one(top_grasp, 0.0, 0.0, hh / 2, 2 * head_r + 0.02, "x"), actionable="slider_lid")
     link = builder.create_link("stopper", parent)
     link.set_joint("prismatic", pose, axis=(0.0, 0.0, 1.0), limits=(0.0, shank + p.uniform("lift", 0.005, 0.02)))
     link.add(part)
@@ -89,7 +89,7 @@ def flip_top(p, builder, parent, pose, neck):
     lid = Part("lid", "flip_lid", [ring(R, R - 0.0015, hl, pose=translation(-R, 0, -tl - hl / 2), role="lid"),
                                    cylinder(R, tl, translation(-R, 0, -tl / 2), role="lid")],
                regions={"lift": Region(("lid",)), "push": Region(("lid",))},
-               grasps=[top_grasp(-R, 0.0, -(tl + hl) / 2, 2 * R + 0.02, "y")], actionable="hinge_lid")
+               grasps=Deferred.one(top_grasp, -R, 0.0, -(tl + hl) / 2, 2 * R + 0.02, "y"), actionable="hinge_lid")
     lid_link = builder.create_link("lid", link)
     lid_link.set_joint("revolute", translation(R, 0, z0 + hl + tl), axis=(0.0, 1.0, 0.0),
                        limits=(0.0, p.uniform("lid_open", 1.8, 2.6)))
@@ -144,7 +144,7 @@ def pump_top(p, builder, parent, pose, neck):
                 [cylinder(rs, stem_hi - stem_lo, translation(0, 0, (stem_lo + stem_hi) / 2), role="stem"),
                  cylinder(rh, hh, translation(0, 0, stem_hi + hh / 2), role="head")],
                 regions={"press": Region(("head",)), "push": Region(("head",))},
-                grasps=[top_grasp(0.0, 0.0, stem_hi + hh / 2, 2 * rh + 0.02, "y", (0.0, 0.0, -1.0))],
+                grasps=Deferred.one(top_grasp, 0.0, 0.0, stem_hi + hh / 2, 2 * rh + 0.02, "y", (0.0, 0.0, -1.0)),
                 actionable="slider_button")
     tip = Part("nozzle", "pump_nozzle", [cylinder(rz, nz + rh / 2, _ALONG_X.at(-(nz + rh / 2) / 2, 0, stem_hi + hh / 2),
                                                   role="nozzle")])

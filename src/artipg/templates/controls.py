@@ -34,7 +34,7 @@ import numpy as np
 
 from artipg.geometry import Cuboid, cuboid, frustum, prism, rect_ring, ring
 from artipg.geometry.transforms import Placer, rot_y, rot_z, translation
-from artipg.model.part import Grasp, Part, Region
+from artipg.model.part import Deferred, Grasp, Part, Region
 
 _ALONG_X = rot_y(math.pi / 2)    # local z -> +x (frustum r_bottom at the front, -x)
 _ALONG_X_PLACER = Placer(_ALONG_X)  # translation(x, y, z) @ _ALONG_X as _ALONG_X_PLACER.at(x, y, z)
@@ -53,14 +53,19 @@ def _x_disc(r_back: float, r_front: float, x0: float, x1: float, role: str):
     return frustum(r_back, r_front, x0 - x1, T, role=role)
 
 
-def _knob_part(template, prims, x_grip, width_y, width_z, depth) -> Part:
+def _knob_grasps(x_grip: float, width_y: float, width_z: float) -> list[Grasp]:
+    """Grasps on a knob's grip at depth ``x_grip``, jaws closing along y and along z."""
     grasps = []
     for base, w in ((_JAW_Y, width_y), (_JAW_Z, width_z)):
         T = base.copy()
         T[0, 3] = x_grip
         grasps.append(Grasp(T, w + 0.02))
+    return grasps
+
+
+def _knob_part(template, prims, x_grip, width_y, width_z, depth) -> Part:
     return Part("knob", template, prims, anchors={"front": (-depth, 0.0, 0.0), "back": (0.0, 0.0, 0.0)},
-                regions={"rotate": _GRIP, "grasp": _GRIP}, grasps=grasps,
+                regions={"rotate": _GRIP, "grasp": _GRIP}, grasps=Deferred(_knob_grasps, x_grip, width_y, width_z),
                 actionable="hinge_knob")
 
 
@@ -251,7 +256,7 @@ def _copy(part: Part) -> Part:
     parameter span are set when it is added): what ``dataclasses.replace(part)``
     gives, a few times cheaper, which counts on 12-20 keys."""
     return Part(part.semantic, part.template, part.primitives, part.anchors, part.regions, part.canonical, part.size,
-                part.grasps, part.actionable)
+                part.grasp_source(), part.actionable)
 
 
 def mount_rocker(builder, parent, part, pose: np.ndarray, name: str = "switch"):

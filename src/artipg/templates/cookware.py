@@ -20,7 +20,7 @@ import numpy as np
 from artipg.geometry import cuboid, cuboid_between, cylinder, rect_ring, torus, tube
 from artipg.geometry.transforms import Placer, rot_x, rot_y, translation
 from artipg.geometry.tube import arc, line
-from artipg.model.part import Grasp, Part, Region
+from artipg.model.part import Deferred, Grasp, Part, Region
 from artipg.templates.extents import span
 from artipg.templates.handles import arch_handle
 from artipg.templates.lids import flat_lid
@@ -58,6 +58,17 @@ def _radial_grasp(x: float, width: float) -> Grasp:
     return _grasp(x, 0.0, 0.0, (-1.0, 0.0, 0.0), (0.0, 0.0, 1.0), width)
 
 
+def _lifted(T: np.ndarray, grasps) -> list[Grasp]:
+    """``grasps`` (a list, or the :class:`Deferred` building it) moved by ``T`` (4, 4),
+    lifting the vessel."""
+    return [Grasp(T @ g.pose, g.width, _LIFT) for g in (grasps() if isinstance(grasps, Deferred) else grasps)]
+
+
+def _arch_grasps(d: float, R: float, h: float, r: float) -> list[Grasp]:
+    """Grasps from above on the top bar of :func:`arch_top_handle`, around its middle."""
+    return [top_grasp(k * (d - R), 0.0, h + R, 2 * r + 0.02, "y") for k in (-0.5, 0.0, 0.5)]
+
+
 def _handle(name, prims, grip=("grip",), clear: float | None = None) -> Part:
     """A handle part; ``clear`` is its highest point within 15 mm of the wall."""
     part = Part("handle", name, prims, regions={"grasp": Region(grip), "lift": Region(grip)},
@@ -85,7 +96,7 @@ def stick_handle(p, radius: float) -> Part:
     bracket, clear = _bracket(p, r, a)
     part = _handle("stick_handle", [bracket] + tube(r, [line(L)], a, translation(-_EMBED, 0, 0), role="grip"),
                    clear=clear)
-    part.grasps = _side_grasps(a, (0.45 * L, 0.75 * L), 2 * r + 0.02)
+    part.grasps = Deferred(_side_grasps, a, (0.45 * L, 0.75 * L), 2 * r + 0.02)
     return part
 
 
@@ -104,7 +115,7 @@ def grip_handle(p, radius: float) -> Part:
              cylinder(rg, lg, T @ translation(ln + lg / 2, 0, 0) @ _ALONG_X, role="grip"),
              torus(rr, 0.002, pose=T @ translation(ln + lg + rr - 0.001, 0, 0), role="grip")]
     part = _handle("grip_handle", prims, clear=clear)
-    part.grasps = _side_grasps(a, (ln + 0.3 * lg, ln + 0.7 * lg), 2 * rg + 0.02)
+    part.grasps = Deferred(_side_grasps, a, (ln + 0.3 * lg, ln + 0.7 * lg), 2 * rg + 0.02)
     return part
 
 
@@ -120,7 +131,7 @@ def flat_handle(p, radius: float) -> Part:
     prims = [bracket, cuboid(L, w, t, T @ translation(L / 2, 0, 0), role="grip"),
              rect_ring(eye + w * 0.4, w, t, eye, w * 0.5, T @ translation(L + eye / 2 - 0.002, 0, 0), role="grip")]
     part = _handle("flat_handle", prims, clear=clear)
-    part.grasps = _side_grasps(a, (0.45 * L, 0.75 * L), t + 0.02)
+    part.grasps = Deferred(_side_grasps, a, (0.45 * L, 0.75 * L), t + 0.02)
     return part
 
 
@@ -138,7 +149,7 @@ def loop_lug(p, radius: float) -> Part:
     a = p.uniform("reach", 0.012, 0.03) + _sag(radius, R) + _EMBED
     T = _XZ_TO_XY @ translation(-_sag(radius, R) - _EMBED, 0, -R)
     part = _handle("loop_lug", tube(r, [line(a), arc(R, math.pi), line(a)], 0.0, T, role="grip"), clear=r)
-    part.grasps = [_radial_grasp(a - _sag(radius, R) - _EMBED + R, 2 * r + 0.02)]
+    part.grasps = Deferred.one(_radial_grasp, a - _sag(radius, R) - _EMBED + R, 2 * r + 0.02)
     return part
 
 
@@ -151,7 +162,7 @@ def tab_lug(p, radius: float) -> Part:
     s = _sag(radius, w / 2) + _EMBED
     part = _handle("tab_lug", [rect_ring(d + s, w, t, d + s - 2 * rim, w - 2 * rim,
                                          translation((d + s) / 2 - s, 0, 0), role="grip")], clear=t / 2)
-    part.grasps = [_radial_grasp(d - rim / 2, t + 0.02)]
+    part.grasps = Deferred.one(_radial_grasp, d - rim / 2, t + 0.02)
     return part
 
 
@@ -161,7 +172,7 @@ def arch_lug(p, radius: float) -> Part:
     part = arch_handle(p, length=L)
     T = _SIDEWAYS.at(-_sag(radius, L / 2) - _EMBED, 0, 0)
     part.primitives = [pr.placed(T) for pr in part.primitives]
-    part.grasps = [Grasp(T @ g.pose, g.width, _LIFT) for g in part.grasps]
+    part.grasps = Deferred(_lifted, T, part.grasp_source())
     part.template = "arch_lug"
     part.anchors["clear"] = (0.0, 0.0, span(part.primitives, 2)[1])
     return part
@@ -183,7 +194,7 @@ def loop_lid(p, radius: float, sides: int | None = None) -> Part:
     lid.template = "loop_lid"
     lid.anchors["top"] = (0.0, 0.0, t + h + R + r)
     lid.regions = {"lift": Region(("grip",)), "grasp": Region(("grip",))}
-    lid.grasps = [top_grasp(0.0, 0.0, t + h + R, 2 * r + 0.02, "y")]
+    lid.grasps = Deferred.one(top_grasp, 0.0, 0.0, t + h + R, 2 * r + 0.02, "y")
     return lid
 
 
@@ -200,7 +211,7 @@ def c_handle(p, r_top: float, z_top: float, r_bot: float, z_bot: float) -> Part:
     rb = min(p.uniform("bend", 0.015, 0.03), (z_top - z_bot) / 2 - 0.004)
     segs, T, x = _c_path(r_top, z_top, r_bot, z_bot, max(p.uniform("reach", 0.035, 0.05), rb + r_bot - r_top), rb)
     part = _handle("c_handle", tube(r, segs, 0.0, T, role="grip"))
-    part.grasps = [_grasp(x, 0.0, (z_top + z_bot) / 2, (-1.0, 0.0, 0.0), (0.0, 1.0, 0.0), 2 * r + 0.02)]
+    part.grasps = Deferred.one(_grasp, x, 0.0, (z_top + z_bot) / 2, (-1.0, 0.0, 0.0), (0.0, 1.0, 0.0), 2 * r + 0.02)
     part.anchors.update(top=((r_top + x - rb) / 2, 0.0, z_top + r), tube=(r, 0.0, 0.0))
     return part
 
@@ -215,7 +226,7 @@ def sleeved_c_handle(p, r_top: float, z_top: float, r_bot: float, z_bot: float) 
     prims = tube(r, segs, 0.0, T, role="frame")
     prims.append(cylinder(rs, ls, translation(x, 0, (z_top + z_bot) / 2), role="grip"))
     part = _handle("sleeved_c_handle", prims)
-    part.grasps = [_grasp(x, 0.0, (z_top + z_bot) / 2, (-1.0, 0.0, 0.0), (0.0, 1.0, 0.0), 2 * rs + 0.02)]
+    part.grasps = Deferred.one(_grasp, x, 0.0, (z_top + z_bot) / 2, (-1.0, 0.0, 0.0), (0.0, 1.0, 0.0), 2 * rs + 0.02)
     part.anchors.update(top=((r_top + x - rb) / 2, 0.0, z_top + r), tube=(r, 0.0, 0.0))
     return part
 
@@ -229,7 +240,7 @@ def block_c_handle(p, r_top: float, z_top: float, r_bot: float, z_bot: float) ->
              cuboid_between((x - t / 2, -w / 2, z_bot - t / 2), (x + t / 2, w / 2, z_top + t / 2), role="grip"),
              cuboid_between((r_bot - _EMBED, -w / 2, z_bot - t / 2), (x + t / 2, w / 2, z_bot + t / 2), role="grip")]
     part = _handle("block_c_handle", prims)
-    part.grasps = [_grasp(x, 0.0, (z_top + z_bot) / 2, (-1.0, 0.0, 0.0), (0.0, 1.0, 0.0), w + 0.02)]
+    part.grasps = Deferred.one(_grasp, x, 0.0, (z_top + z_bot) / 2, (-1.0, 0.0, 0.0), (0.0, 1.0, 0.0), w + 0.02)
     part.anchors.update(top=((r_top + x) / 2, 0.0, z_top + t / 2), tube=(t / 2, 0.0, 0.0))
     return part
 
@@ -246,5 +257,5 @@ def arch_top_handle(p, d: float, clearance: float) -> Part:
     segs = [line(h + _EMBED), arc(R, -math.pi / 2), line(2 * (d - R)), arc(R, -math.pi / 2), line(h + _EMBED)]
     part = _handle("arch_top_handle", tube(r, segs, math.pi / 2, translation(-d, 0, -_EMBED), role="grip"))
     part.anchors["under"] = (0.0, 0.0, h + R - r)
-    part.grasps = [top_grasp(k * (d - R), 0.0, h + R, 2 * r + 0.02, "y") for k in (-0.5, 0.0, 0.5)]
+    part.grasps = Deferred(_arch_grasps, d, R, h, r)
     return part

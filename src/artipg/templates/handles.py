@@ -17,7 +17,7 @@ import numpy as np
 from artipg.geometry import cuboid, cylinder, sphere, tube
 from artipg.geometry.tube import arc, line
 from artipg.geometry.transforms import Placer, rot_y, translation
-from artipg.model.part import Grasp, Part, Region
+from artipg.model.part import Deferred, Grasp, Part, Region
 
 _X_AXIS = Placer(rot_y(math.pi / 2))  # local z -> object x
 
@@ -40,6 +40,11 @@ def _grasps_along_z(x: float, z0: float, z1: float, width: float, k: int = 3) ->
     return [front_grasp(x, 0.0, z0 + (z1 - z0) * i / (k - 1), width) for i in range(k)]
 
 
+def _thirds_grasps(x: float, y: float, L: float, width: float) -> list[Grasp]:
+    """Front grasps at (x, y) at -L/3, 0 and L/3 along z."""
+    return [front_grasp(x, y, L * k / 3, width) for k in (-1, 0, 1)]
+
+
 def bar_handle(p, length: float | None = None) -> Part:
     """Straight round bar on two posts (a "line fixed handle")."""
     L = p.uniform("length", 0.08, 0.35, fixed=length)
@@ -53,7 +58,8 @@ def bar_handle(p, length: float | None = None) -> Part:
         T = _X_AXIS.at(x_bar / 2 + r / 2, 0, s * (L / 2 - inset - post_r))  # spans x in [x_bar + r, 0]
         prims.append(cylinder(post_r, standoff - r, T, role="post"))
     return Part("handle", "bar_handle", prims, regions={"grasp": Region(("grip",)), "pull": Region(("grip",))},
-                grasps=_grasps_along_z(x_bar, -L / 3, L / 3, 4 * r + 0.02), actionable="line_fixed_handle")
+                grasps=Deferred(_grasps_along_z, x_bar, -L / 3, L / 3, 4 * r + 0.02),
+                actionable="line_fixed_handle")
 
 
 def arch_handle(p, length: float | None = None) -> Part:
@@ -67,7 +73,8 @@ def arch_handle(p, length: float | None = None) -> Part:
     # start at the lower mount point, heading -x (α = π), in the x-z plane
     prims = tube(r, segs, heading=math.pi, pose=translation(0, 0, -L / 2), role="grip")
     return Part("handle", "arch_handle", prims, regions={"grasp": Region(("grip",)), "pull": Region(("grip",))},
-                grasps=_grasps_along_z(-standoff, -L / 4, L / 4, 4 * r + 0.02), actionable="line_fixed_handle")
+                grasps=Deferred(_grasps_along_z, -standoff, -L / 4, L / 4, 4 * r + 0.02),
+                actionable="line_fixed_handle")
 
 
 def flat_bar_handle(p, length: float | None = None) -> Part:
@@ -81,7 +88,8 @@ def flat_bar_handle(p, length: float | None = None) -> Part:
         prims.append(cuboid(standoff - t, w * 0.8, w * 0.8, translation(-(standoff - t) / 2, 0, s * (L / 2 - w / 2)),
                             role="post"))
     return Part("handle", "flat_bar_handle", prims, regions={"grasp": Region(("grip",)), "pull": Region(("grip",))},
-                grasps=_grasps_along_z(-standoff + t / 2, -L / 3, L / 3, w + 0.02), actionable="line_fixed_handle")
+                grasps=Deferred(_grasps_along_z, -standoff + t / 2, -L / 3, L / 3, w + 0.02),
+                actionable="line_fixed_handle")
 
 
 def knob_pull(p, length: float | None = None) -> Part:
@@ -93,7 +101,8 @@ def knob_pull(p, length: float | None = None) -> Part:
     prims = [cylinder(stem_r, stem, _X_AXIS.at(-stem / 2, 0, 0), role="stem"),
              cylinder(R, head, _X_AXIS.at(-stem - head / 2, 0, 0), role="grip")]
     return Part("handle", "knob_pull", prims, regions={"grasp": Region(("grip",)), "pull": Region(("grip",))},
-                grasps=[front_grasp(-stem - head / 2, 0.0, 0.0, 2 * R + 0.02)], actionable="round_fixed_handle")
+                grasps=Deferred.one(front_grasp, -stem - head / 2, 0.0, 0.0, 2 * R + 0.02),
+                actionable="round_fixed_handle")
 
 
 def ball_knob_pull(p, length: float | None = None) -> Part:
@@ -104,7 +113,8 @@ def ball_knob_pull(p, length: float | None = None) -> Part:
     prims = [cylinder(stem_r, stem + 0.2 * R, _X_AXIS.at(-(stem + 0.2 * R) / 2, 0, 0), role="stem"),
              sphere(R, pose=translation(-stem - R, 0, 0), role="grip")]
     return Part("handle", "ball_knob_pull", prims, regions={"grasp": Region(("grip",)), "pull": Region(("grip",))},
-                grasps=[front_grasp(-stem - R, 0.0, 0.0, 2 * R + 0.02)], actionable="round_fixed_handle")
+                grasps=Deferred.one(front_grasp, -stem - R, 0.0, 0.0, 2 * R + 0.02),
+                actionable="round_fixed_handle")
 
 
 def edge_pull(p, length: float | None = None) -> Part:
@@ -116,7 +126,7 @@ def edge_pull(p, length: float | None = None) -> Part:
     prims = [cuboid(reach, t, L, translation(-reach / 2, 0, 0), role="mount"),
              cuboid(t, lip, L, translation(-reach + t / 2, -lip / 2 + t / 2, 0), role="grip")]
     return Part("handle", "edge_pull", prims, regions={"grasp": Region(("grip",)), "pull": Region(("grip",))},
-                grasps=[front_grasp(-reach + t / 2, t / 2 - lip / 2, L * k / 3, lip + 0.02) for k in (-1, 0, 1)],
+                grasps=Deferred(_thirds_grasps, -reach + t / 2, t / 2 - lip / 2, L, lip + 0.02),
                 actionable="line_fixed_handle")
 
 

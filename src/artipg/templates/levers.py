@@ -27,7 +27,7 @@ import numpy as np
 from artipg.geometry import cuboid, cylinder, frustum, prism, sphere, tube
 from artipg.geometry.transforms import Placer, rot_y, rot_z, rotation, translation
 from artipg.geometry.tube import arc, line
-from artipg.model.part import Grasp, Part, Region
+from artipg.model.part import Deferred, Grasp, Part, Region
 
 CLEARANCE = 0.006
 _ALONG_Y = Placer(rotation((1.0, 0.0, 0.0), -math.pi / 2))  # local z -> +y
@@ -44,6 +44,12 @@ def top_grasp(x: float, y: float, z: float, width: float, jaw: str = "x", open_d
     T = (_TOP_JAW_X if jaw == "x" else _TOP_JAW_Y).copy()
     T[0, 3], T[1, 3], T[2, 3] = x, y, z
     return Grasp(T, width, np.asarray(open_dir, dtype=float))
+
+
+def _bail_grasps(span: float, h: float, rc: float, rg: float) -> list[Grasp]:
+    """Grasps from above on a bail's top, at a quarter span either side of the middle."""
+    return [top_grasp(0.0, y, h + math.sqrt(rc * rc - max(0.0, abs(y) - span + rc) ** 2), 2 * rg + 0.02)
+            for y in (-0.25 * span, 0.0, 0.25 * span)]
 
 
 def _leg_height(span: float, rc: float, r: float, clear) -> float:
@@ -82,8 +88,7 @@ def _bail(p, template, span, clear, rc_frac, sleeve):
                 anchors={"pivot_+y": (0.0, span, 0.0), "pivot_-y": (0.0, -span, 0.0), "apex": (0.0, 0.0, top),
                          "apex_inner": (0.0, 0.0, top - rg), "pin_+y": (0.0, span - r - lp, 0.0)},
                 regions={"grasp": Region(grip), "lift": Region(grip)},
-                grasps=[top_grasp(0.0, y, h + math.sqrt(rc * rc - max(0.0, abs(y) - span + rc) ** 2), 2 * rg + 0.02)
-                        for y in (-0.25 * span, 0.0, 0.25 * span)],
+                grasps=Deferred(_bail_grasps, span, h, rc, rg),
                 actionable="hinge_handle")
 
 
@@ -137,8 +142,8 @@ def lever_handle(p, max_reach: float | None = None) -> Part:
     prims = [cylinder(rh, hh, translation(0, 0, hh / 2), role="hub"),
              cuboid(L - w / 2, w, th, translation(-(L - w / 2) / 2, 0, hh - th / 2), role="grip"),
              cylinder(w / 2, th, translation(-L + w / 2, 0, hh - th / 2), role="grip")]
-    return _turn_part("lever_handle", prims, L, [top_grasp(-L + w, 0.0, hh - th / 2, w + 0.02, "y", (0, 0, 0))],
-                      "hinge_handle")
+    return _turn_part("lever_handle", prims, L,
+                      Deferred.one(top_grasp, -L + w, 0.0, hh - th / 2, w + 0.02, "y", (0, 0, 0)), "hinge_handle")
 
 
 def cross_handle(p, max_reach: float | None = None) -> Part:
@@ -155,10 +160,14 @@ def cross_handle(p, max_reach: float | None = None) -> Part:
         R = rot_z(phase + 2 * math.pi * i / n)
         prims.append(cylinder(rs, L - rb, R @ translation(-(L - rb) / 2, 0, zs) @ _ALONG_X, role="grip"))
         prims.append(sphere(rb, pose=R @ translation(-(L - rb), 0, zs), role="grip"))
-    # across the first spoke, near its ball
+    return _turn_part("cross_handle", prims, L, Deferred(_spoke_grasp, phase, L, rb, zs), "hinge_knob")
+
+
+def _spoke_grasp(phase: float, L: float, rb: float, zs: float) -> list[Grasp]:
+    """The grasp across the first spoke of a :func:`cross_handle`, near its ball."""
     g = top_grasp(0.0, 0.0, 0.0, 2 * rb + 0.02, "y", (0, 0, 0))
     g.pose[:] = rot_z(phase) @ translation(-(L - 2 * rb), 0, zs) @ g.pose
-    return _turn_part("cross_handle", prims, L, [g], "hinge_knob")
+    return [g]
 
 
 def knob_handle(p, max_reach: float | None = None) -> Part:
@@ -171,7 +180,8 @@ def knob_handle(p, max_reach: float | None = None) -> Part:
     prims = [prism(R, h, n, translation(0, 0, h / 2), role="grip"),
              sphere(Rs, Rs - cap, Rs, translation(0, 0, h - Rs + cap), role="grip")]
     ap = R * math.cos(math.pi / n)
-    return _turn_part("knob_handle", prims, R, [top_grasp(0, 0, h / 2, 2 * ap + 0.02, "x", (0, 0, 0))], "hinge_knob")
+    return _turn_part("knob_handle", prims, R, Deferred.one(top_grasp, 0, 0, h / 2, 2 * ap + 0.02, "x", (0, 0, 0)),
+                      "hinge_knob")
 
 
 VALVE_HANDLES = {lever_handle: 2.0, cross_handle: 1.5, knob_handle: 1.0}
@@ -189,10 +199,10 @@ def joystick_lever(p, radius: float) -> Part:
     arm = cuboid(L, w, th, translation(x0, 0, z0) @ rot_y(rise) @ translation(-L / 2, 0, 0), role="grip")
     prims = [cylinder(radius, hc, translation(0, 0, hc / 2), role="cap"), arm]
     tip = (x0 - (L - 0.015) * math.cos(rise), 0.0, z0 + (L - 0.015) * math.sin(rise))
-    g = top_grasp(*tip, w + 0.02, "y", (0.0, 0.0, 1.0))
+    g = Deferred.one(top_grasp, *tip, w + 0.02, "y", (0.0, 0.0, 1.0))
     return Part("lever", "joystick_lever", prims, anchors={"pivot": (radius, 0.0, 0.0), "tip": tip},
                 regions={"grasp": Region(("grip",)), "lift": Region(("grip",)), "push": Region(("grip",))},
-                grasps=[g], actionable="hinge_handle")
+                grasps=g, actionable="hinge_handle")
 
 
 def side_lever(p, radius: float | None = None) -> Part:
@@ -204,8 +214,12 @@ def side_lever(p, radius: float | None = None) -> Part:
     prims = [frustum(rh, 0.9 * rh, hl, _ALONG_MINUS_X.at(-hl / 2, 0, 0), role="hub"),
              cylinder(ra, L, translation(-hl + ra, 0, L / 2), role="grip"),
              sphere(1.3 * ra, pose=translation(-hl + ra, 0, L), role="grip")]
-    g = Grasp(np.array([[0.0, 0.0, 1.0, -hl + ra], [0.0, 1.0, 0.0, 0.0], [-1.0, 0.0, 0.0, 0.8 * L],
-                        [0.0, 0.0, 0.0, 1.0]]), 2.6 * ra + 0.02)
     return Part("lever", "side_lever", prims, anchors={"reach": (0.0, 0.0, L + 1.3 * ra)},
-                regions={"grasp": Region(("grip",)), "rotate": Region(("grip",))}, grasps=[g],
-                actionable="hinge_handle")
+                regions={"grasp": Region(("grip",)), "rotate": Region(("grip",))},
+                grasps=Deferred(_side_lever_grasp, hl, ra, L), actionable="hinge_handle")
+
+
+def _side_lever_grasp(hl: float, ra: float, L: float) -> list[Grasp]:
+    """The grasp across a :func:`side_lever`'s arm, approaching the panel (+x)."""
+    return [Grasp(np.array([[0.0, 0.0, 1.0, -hl + ra], [0.0, 1.0, 0.0, 0.0], [-1.0, 0.0, 0.0, 0.8 * L],
+                            [0.0, 0.0, 0.0, 1.0]]), 2.6 * ra + 0.02)]

@@ -19,7 +19,7 @@ import numpy as np
 
 from artipg.geometry import cuboid, cylinder, prism, ring, sphere
 from artipg.geometry.transforms import translation
-from artipg.model.part import Grasp, Part, Region
+from artipg.model.part import Deferred, Grasp, Part, Region
 from artipg.templates.levers import top_grasp
 
 # gripper approaching +x (the lid's front edge), jaws closing along z (pinch)
@@ -36,12 +36,17 @@ def _apothem(R: float, sides) -> float:
     return R if sides is None else R * math.cos(math.pi / sides)
 
 
+def _edge_grasp(a: float, t: float, skirt: float) -> list[Grasp]:
+    """A pinch on a lid's front edge (disc and skirt) at apothem ``a``."""
+    T = _EDGE.copy()
+    T[0, 3], T[2, 3] = -a + 0.01, (t - skirt) / 2
+    return [Grasp(T, t + skirt + 0.02, _UP)]
+
+
 def _lid(template, prims, R, t, skirt, top, sides, grip_roles=("disc",), grasps=None) -> Part:
     a = _apothem(R, sides)
-    if grasps is None:  # pinch the front edge (disc and skirt)
-        T = _EDGE.copy()
-        T[0, 3], T[2, 3] = -a + 0.01, (t - skirt) / 2
-        grasps = [Grasp(T, t + skirt + 0.02, _UP)]
+    if grasps is None:
+        grasps = Deferred(_edge_grasp, a, t, skirt)
     if grip_roles != ("disc",):
         regions = {"lift": Region(grip_roles), "grasp": Region(grip_roles)}
     else:  # the front edge
@@ -97,10 +102,13 @@ def _knob(p, z0: float):
     hk = p.uniform("knob_height", 0.01, 0.02)
     prims = [cylinder(rs, hs + 0.001, translation(0, 0, z0 + hs / 2 - 0.0005), role="stem"),
              cylinder(rk, hk, translation(0, 0, z0 + hs + hk / 2), role="knob")]
-    zc = z0 + hs + hk / 2
+    return prims, z0 + hs + hk, Deferred(_knob_grasps, z0 + hs + hk / 2, rk)
+
+
+def _knob_grasps(zc: float, rk: float) -> list[Grasp]:
+    """Grasps on a lid knob of radius ``rk`` centred at height ``zc``: from above and from -y."""
     side = np.array([[0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 1.0, 0.0], [1.0, 0.0, 0.0, zc], [0.0, 0.0, 0.0, 1.0]])
-    grasps = [top_grasp(0.0, 0.0, zc, 2 * rk + 0.02, "x"), Grasp(side, 2 * rk + 0.02, np.array([0.0, 0.0, 1.0]))]
-    return prims, z0 + hs + hk, grasps
+    return [top_grasp(0.0, 0.0, zc, 2 * rk + 0.02, "x"), Grasp(side, 2 * rk + 0.02, np.array([0.0, 0.0, 1.0]))]
 
 
 def knobbed_lid(p, radius: float, sides: int | None = None) -> Part:
@@ -126,8 +134,8 @@ def bridge_lid(p, radius: float, sides: int | None = None) -> Part:
     th = p.uniform("bar_thickness", 0.005, 0.01)
     prims += [cuboid(w, w, hp, translation(0, y, t + hp / 2), role="post") for y in (-(L - w) / 2, (L - w) / 2)]
     prims.append(cuboid(w, L, th, translation(0, 0, t + hp + th / 2), role="grip"))
-    g = top_grasp(0.0, 0.0, t + hp + th / 2, w + 0.02, "x")
-    return _lid("bridge_lid", prims, R, t, s, t + hp + th, sides, grip_roles=("grip",), grasps=[g])
+    g = Deferred.one(top_grasp, 0.0, 0.0, t + hp + th / 2, w + 0.02, "x")
+    return _lid("bridge_lid", prims, R, t, s, t + hp + th, sides, grip_roles=("grip",), grasps=g)
 
 
 LIDS = {flat_lid: 2.0, knobbed_lid: 2.0, domed_lid: 1.0, bridge_lid: 1.0}

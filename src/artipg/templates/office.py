@@ -17,7 +17,7 @@ import numpy as np
 
 from artipg.geometry import Ring, cuboid_between, cylinder, ring, tri_prism
 from artipg.geometry.transforms import Placer, rot_x, rot_z, translation
-from artipg.model.part import Part, Region
+from artipg.model.part import Deferred, Part, Region
 from artipg.templates.extents import span
 from artipg.templates.levers import top_grasp
 
@@ -92,9 +92,9 @@ def _arm(name, top, p, length, width, radius, clear, skirt, axle_r, nose_gap):
                           role="skirt"))
     prims.append(cuboid_between((x0, -y1, -radius + 0.001), (x0 + t, y1, z1), role="nose"))
     # from above near the nose, jaws closing across the arm's width outside the skirts
-    grasp = top_grasp(0.7 * x0, 0.0, radius + clear, 2 * y1 + 0.02, "y")
+    grasp = Deferred.one(top_grasp, 0.7 * x0, 0.0, radius + clear, 2 * y1 + 0.02, "y")
     return Part("arm", name, prims, regions={"push": Region(("cover",)), "grasp": Region(("cover",))},
-                grasps=[grasp], actionable="hinge_handle")
+                grasps=grasp, actionable="hinge_handle")
 
 
 def flat_arm(p, length, width, radius, clear, skirt, axle_r, nose_gap) -> Part:

@@ -13,7 +13,7 @@ import numpy as np
 
 from artipg.geometry import cuboid, cuboid_between, rect_ring
 from artipg.geometry.transforms import Placer, rot_y, translation
-from artipg.model.part import Grasp, Part, Region
+from artipg.model.part import Deferred, Grasp, Part, Region
 
 _FRAME_TO_X = Placer(rot_y(np.pi / 2))  # rect ring's z (thickness) -> x
 
@@ -75,7 +75,7 @@ def slab_door(p, width: float, height: float, thickness: float | None = None) ->
     t = p.uniform("thickness", 0.012, 0.025, fixed=thickness)
     part = Part("door", "slab_door", [cuboid(t, width, height, translation(-t / 2, 0, 0), role="panel")],
                 anchors=_front_anchors(t, width, height), regions=_front_regions(t, width, height),
-                grasps=door_edge_grasps(t, width, height), actionable="hinge_door")
+                grasps=Deferred(door_edge_grasps, t, width, height), actionable="hinge_door")
     return part
 
 
@@ -89,7 +89,7 @@ def framed_door(p, width: float, height: float, thickness: float | None = None) 
                       _FRAME_TO_X.at(-t / 2, 0, 0), role="panel")
     inner = cuboid(panel_t, width - 2 * rail, height - 2 * rail, translation(-panel_t / 2, 0, 0), role="inset")
     return Part("door", "framed_door", [frame, inner], anchors=_front_anchors(t, width, height),
-                regions=_front_regions(t, width, height), grasps=door_edge_grasps(t, width, height),
+                regions=_front_regions(t, width, height), grasps=Deferred(door_edge_grasps, t, width, height),
                 actionable="hinge_door")
 
 
@@ -102,7 +102,7 @@ def glass_door(p, width: float, height: float, thickness: float | None = None) -
                       _FRAME_TO_X.at(-t / 2, 0, 0), role="panel")
     pane = cuboid(glass_t, width - 2 * rail, height - 2 * rail, translation(-t / 2, 0, 0), role="glass")
     return Part("door", "glass_door", [frame, pane], anchors=_front_anchors(t, width, height),
-                regions=_front_regions(t, width, height), grasps=door_edge_grasps(t, width, height),
+                regions=_front_regions(t, width, height), grasps=Deferred(door_edge_grasps, t, width, height),
                 actionable="hinge_door")
 
 
@@ -136,7 +136,7 @@ def box_drawer(p, width: float, height: float, depth: float, opening=None, thick
     front = np.array([[-t - 1e-4, -width / 2, -height / 2], [-t + 1e-4, width / 2, height / 2]])
     return Part("drawer", "box_drawer", prims, anchors=_front_anchors(t, width, height),
                 regions={"push": Region(("panel",), front)},
-                grasps=[edge_grasp(t, 0.0, height / 2, 0.0, 1.0)],
+                grasps=Deferred.one(edge_grasp, t, 0.0, height / 2, 0.0, 1.0),
                 actionable="slider_drawer")
 
 
@@ -160,7 +160,7 @@ def slot_drawer(p, width: float, height: float, depth: float, opening=None, thic
     return Part("drawer", "slot_drawer", prims, anchors=_front_anchors(t, width, height),
                 regions={"push": Region(("panel",), front), "pull": Region(("panel",), grip),
                          "grasp": Region(("panel",), grip)},
-                grasps=[edge_grasp(t, 0.0, h2 - slot, 0.0, 1.0)],
+                grasps=Deferred.one(edge_grasp, t, 0.0, h2 - slot, 0.0, 1.0),
                 actionable="slider_drawer")
 
 

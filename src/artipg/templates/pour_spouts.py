@@ -21,7 +21,7 @@ import numpy as np
 from artipg.geometry import cuboid, cylinder, ring, tube
 from artipg.geometry.transforms import Placer, rot_y, translation
 from artipg.geometry.tube import arc, line
-from artipg.model.part import Grasp, Part, Region
+from artipg.model.part import Deferred, Grasp, Part, Region
 
 _EMBED = 0.0008  # the spout's inner face sits this deep in the wall (walls are >= 1.5 mm)
 _WALL = 0.0015  # sheet thickness of the hollow straight spouts (a solid one would outweigh the kettle)
@@ -106,13 +106,14 @@ def whistle_cap(p, tip_radius: float) -> Part:
              cuboid(tab, 0.5 * rc, 0.002, translation(0.0005 + L / 2, 0, 0.0008), role="tab")]
     return Part("cap", "whistle_cap", prims, anchors={"radius": (rc, 0.0, 0.0)},
                 regions={"push": Region(("tab",)), "lift": Region(("tab", "cap"))},
-                grasps=[Grasp(_end_grasp(0.0005 + L - 0.004, -rc), 2 * rc + 0.02)], actionable="hinge_lid")
+                grasps=Deferred(_cap_grasp, 0.0005 + L - 0.004, rc), actionable="hinge_lid")
 
 
-def _end_grasp(x: float, z: float) -> np.ndarray:
-    """Gripper frame (4, 4) approaching a cap's outer end along -x at (x, 0, z), jaws
-    closing along y (clear of the spout behind the hinge at any opening)."""
-    return np.array([[0.0, 0.0, -1.0, x], [0.0, 1.0, 0.0, 0.0], [1.0, 0.0, 0.0, z], [0.0, 0.0, 0.0, 1.0]])
+def _cap_grasp(x: float, rc: float) -> list[Grasp]:
+    """The grasp on a cap of radius ``rc``, approaching its outer end along -x at
+    (x, 0, -rc), jaws closing along y (clear of the spout behind the hinge at any opening)."""
+    T = np.array([[0.0, 0.0, -1.0, x], [0.0, 1.0, 0.0, 0.0], [1.0, 0.0, 0.0, -rc], [0.0, 0.0, 0.0, 1.0]])
+    return [Grasp(T, 2 * rc + 0.02)]
 
 
 def mount_pose(tip, heading: float, cap_radius: float):

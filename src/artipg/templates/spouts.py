@@ -26,7 +26,7 @@ import numpy as np
 from artipg.geometry import cuboid, cylinder, frustum, ring, tube
 from artipg.geometry.transforms import translation
 from artipg.geometry.tube import arc, line
-from artipg.model.part import Grasp, Part, Region
+from artipg.model.part import Deferred, Grasp, Part, Region
 
 
 def round_deck(p, radius: float | None = None, length: float | None = None) -> Part:
@@ -169,8 +169,13 @@ def spray_head(p, radius: float) -> Part:
     face = p.uniform("face_height", 0.004, 0.008)
     prims = [frustum(radius * 1.05, rh, L - face, translation(0, 0, (L - face) / 2), role="grip"),
              cylinder(rh, face, translation(0, 0, L - face / 2), role="face")]
-    # approach from the part's -x side (along +x), jaws across the body (y)
-    T = np.array([[0.0, 0.0, 1.0, 0.0], [0.0, 1.0, 0.0, 0.0], [-1.0, 0.0, 0.0, 0.6 * L], [0.0, 0.0, 0.0, 1.0]])
     return Part("nozzle", "spray_head", prims, anchors={"outlet": (0.0, 0.0, L), "length": (0.0, 0.0, L)},
                 regions={"grasp": Region(("grip",)), "pull": Region(("grip",))},
-                grasps=[Grasp(T, 2 * rh + 0.02, np.array([0.0, 0.0, 1.0]))])
+                grasps=Deferred(_head_grasp, L, rh))
+
+
+def _head_grasp(L: float, rh: float) -> list[Grasp]:
+    """The grasp on a spray head ``L`` long of radius ``rh``: approaching from the
+    part's -x side (along +x), jaws across the body (y)."""
+    T = np.array([[0.0, 0.0, 1.0, 0.0], [0.0, 1.0, 0.0, 0.0], [-1.0, 0.0, 0.0, 0.6 * L], [0.0, 0.0, 0.0, 1.0]])
+    return [Grasp(T, 2 * rh + 0.02, np.array([0.0, 0.0, 1.0]))]

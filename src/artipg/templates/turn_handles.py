@@ -20,7 +20,7 @@ import numpy as np
 from artipg.geometry import cuboid, cylinder, frustum, sphere, tube
 from artipg.geometry.tube import arc, line
 from artipg.geometry.transforms import Placer, rot_x, rot_y, translation
-from artipg.model.part import Grasp, Part, Region
+from artipg.model.part import Deferred, Grasp, Part, Region
 
 _X = Placer(rot_y(-math.pi / 2))  # local z -> -x
 _Y = Placer(rot_x(-math.pi / 2))  # local z -> +y
@@ -37,6 +37,11 @@ def _grasp(x: float, y: float, width: float) -> Grasp:
     return Grasp(T, width)
 
 
+def _lever_grasps(x: float, side: float, L: float, grip_w: float) -> list[Grasp]:
+    """Grasps at half and 0.8 of a lever's length."""
+    return [_grasp(x, side * f * L, grip_w + 0.02) for f in (0.5, 0.8)]
+
+
 def _rose_and_neck(p, neck_r: float):
     R = p.uniform("rose_radius", 0.022, 0.03)
     rt = p.uniform("rose_thickness", 0.006, 0.012)
@@ -49,7 +54,7 @@ def _lever(template, prims, x, side, L, grip_w) -> Part:
     return Part("handle", template, prims, anchors={"tip": (x, side * L, 0.0), "front": (x, 0.0, 0.0),
                                                     "reach": (reach, 0.0, 0.0)},
                 regions={"grasp": Region(("grip",)), "push": Region(("grip",)), "rotate": Region(("grip",))},
-                grasps=[_grasp(x, side * f * L, grip_w + 0.02) for f in (0.5, 0.8)], actionable="hinge_handle")
+                grasps=Deferred(_lever_grasps, x, side, L, grip_w), actionable="hinge_handle")
 
 
 def round_lever(p, side: float = 1.0) -> Part:
@@ -94,7 +99,7 @@ def ball_knob(p, side: float = 1.0) -> Part:
     return Part("handle", "ball_knob", prims, anchors={"tip": (x - 0.8 * R, 0.0, 0.0), "front": (x - 1.8 * R, 0, 0),
                                                        "reach": (R, 0.0, 0.0)},
                 regions={"grasp": Region(("grip",)), "rotate": Region(("grip",))},
-                grasps=[_grasp(x - 0.8 * R, 0.0, 2 * R + 0.02)], actionable="hinge_knob")
+                grasps=Deferred.one(_grasp, x - 0.8 * R, 0.0, 2 * R + 0.02), actionable="hinge_knob")
 
 
 def flared_knob(p, side: float = 1.0) -> Part:
@@ -107,7 +112,7 @@ def flared_knob(p, side: float = 1.0) -> Part:
     return Part("handle", "flared_knob", prims, anchors={"tip": (x - d, 0.0, 0.0), "front": (x - d, 0.0, 0.0),
                                                          "reach": (R, 0.0, 0.0)},
                 regions={"grasp": Region(("grip",)), "rotate": Region(("grip",))},
-                grasps=[_grasp(x - 0.85 * d, 0.0, 2 * R + 0.02)], actionable="hinge_knob")
+                grasps=Deferred.one(_grasp, x - 0.85 * d, 0.0, 2 * R + 0.02), actionable="hinge_knob")
 
 
 DOOR_LEVERS = {round_lever: 3.0, flat_lever: 2.0, return_lever: 1.5}
@@ -122,7 +127,7 @@ def thumb_turn(p, side: float = 1.0) -> Part:
     prims = [_disc(R, 0.0, -rt, "rose"), cuboid(d, 0.008, w, translation(-rt - d / 2, 0, 0), role="grip")]
     return Part("knob", "thumb_turn", prims, anchors={"tip": (-rt - d, 0.0, w / 2), "reach": (R, 0.0, 0.0)},
                 regions={"rotate": Region(("grip",)), "grasp": Region(("grip",))},
-                grasps=[_grasp(-rt - d / 2, 0.0, 0.03)], actionable="hinge_knob")
+                grasps=Deferred.one(_grasp, -rt - d / 2, 0.0, 0.03), actionable="hinge_knob")
 
 
 def casement_handle(p, side: float = 1.0):
@@ -143,13 +148,16 @@ def casement_handle(p, side: float = 1.0):
     L = p.uniform("lever_length", 0.09, 0.12)
     gt = p.uniform("grip_thickness", 0.012, 0.018)
     prims = [_disc(r, 0.0, -hd, "hub"), cuboid(gt, 0.016, L, translation(-hd + gt / 2, 0, -L / 2), role="grip")]
-    # approach +x, jaws closing along y across the hanging grip
-    grasps = [Grasp(np.array([[0.0, 0.0, 1.0, -hd + gt / 2], [0.0, 1.0, 0.0, 0.0], [-1.0, 0.0, 0.0, -f * L],
-                              [0.0, 0.0, 0.0, 1.0]]), 0.036) for f in (0.55, 0.8)]
     lever = Part("handle", "casement_handle", prims, anchors={"tip": (-hd, 0.0, -L), "reach": (L, 0.0, 0.0)},
-                 regions={"grasp": Region(("grip",)), "rotate": Region(("grip",))}, grasps=grasps,
-                 actionable="hinge_handle")
+                 regions={"grasp": Region(("grip",)), "rotate": Region(("grip",))},
+                 grasps=Deferred(_casement_grasps, hd, gt, L), actionable="hinge_handle")
     return base, lever
+
+
+def _casement_grasps(hd: float, gt: float, L: float) -> list[Grasp]:
+    """Grasps on a casement lever's hanging grip: approach +x, jaws closing along y."""
+    return [Grasp(np.array([[0.0, 0.0, 1.0, -hd + gt / 2], [0.0, 1.0, 0.0, 0.0], [-1.0, 0.0, 0.0, -f * L],
+                            [0.0, 0.0, 0.0, 1.0]]), 0.036) for f in (0.55, 0.8)]
 
 
 def spoke_wheel(p, side: float = 1.0, radius: float | None = None) -> Part:
@@ -162,7 +170,7 @@ def spoke_wheel(p, side: float = 1.0, radius: float | None = None) -> Part:
     ball = p.uniform("ball_radius", 1.3, 1.9) * r
     hub_d = max(p.uniform("hub_depth", 0.02, 0.035), 2 * ball + 0.006)  # the balls clear the surface
     x = -hub_d / 2
-    prims, grasps = [_disc(hub_r, 0.0, -hub_d, "hub")], []
+    prims = [_disc(hub_r, 0.0, -hub_d, "hub")]
     a0 = p.uniform("phase", 0.0, math.pi / n)
     for i in range(n):
         a = a0 + 2 * math.pi * i / n
@@ -170,13 +178,22 @@ def spoke_wheel(p, side: float = 1.0, radius: float | None = None) -> Part:
         R = np.array([[1.0, 0.0, 0.0, x], [0.0, c, -s, 0.0], [0.0, s, c, 0.0], [0.0, 0.0, 0.0, 1.0]])
         prims.append(cylinder(r, L, R @ translation(0, 0, L / 2), role="grip"))
         prims.append(sphere(ball, pose=R @ translation(0, 0, L), role="grip"))
-        # pinch the ball from the front, jaws closing across its spoke
-        T = np.array([[0.0, 0.0, 1.0, x], [s, c, 0.0, -s * L], [-c, s, 0.0, c * L], [0.0, 0.0, 0.0, 1.0]])
-        grasps.append(Grasp(T, 2 * ball + 0.02))
     return Part("handle", "spoke_wheel", prims, anchors={"tip": (x, 0.0, L), "front": (-hub_d, 0.0, 0.0),
                                                          "reach": (L + ball, 0.0, 0.0)},
                 regions={"grasp": Region(("grip",)), "rotate": Region(("grip",))},
-                grasps=grasps, actionable="hinge_handle")
+                grasps=Deferred(_wheel_grasps, a0, n, x, L, ball), actionable="hinge_handle")
+
+
+def _wheel_grasps(a0: float, n: int, x: float, L: float, ball: float) -> list[Grasp]:
+    """Grasps on the balls of a :func:`spoke_wheel`: pinched from the front, jaws
+    closing across each spoke."""
+    grasps = []
+    for i in range(n):
+        a = a0 + 2 * math.pi * i / n
+        c, s = math.cos(a), math.sin(a)
+        T = np.array([[0.0, 0.0, 1.0, x], [s, c, 0.0, -s * L], [-c, s, 0.0, c * L], [0.0, 0.0, 0.0, 1.0]])
+        grasps.append(Grasp(T, 2 * ball + 0.02))
+    return grasps
 
 
 SIDELESS = frozenset((ball_knob, flared_knob, thumb_turn))  # templates that ignore ``side``
