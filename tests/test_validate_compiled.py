@@ -235,7 +235,8 @@ def test_compiled_piece_flags_equal_the_numpy_ones():
 @pytest.mark.parametrize("category", CATEGORIES)
 def test_compiled_pieces_and_tables_equal_the_numpy_ones(category, numpy_path):
     """Pieces.of (rectangular rings as four boxes) and the SDF tables, with sines
-    from the kernel and from numpy; the tables' radial extents are Pieces.radial."""
+    from the kernel and from numpy, and as Pieces.of computes them with the arrays;
+    the tables' radial extents are Pieces.radial."""
     import artipg.validate.jit_contacts as jc
 
     def arrays(p):
@@ -248,6 +249,7 @@ def test_compiled_pieces_and_tables_equal_the_numpy_ones(category, numpy_path):
             assert arrays(p) == numpy_path(lambda: arrays(Pieces.of(obj, 7)))
             assert p._kinds == numpy_path(lambda: Pieces.of(obj, 7)._kinds)
             table = jc.piece_table(p)
+            assert _bytes(*p._sdf_table) == _bytes(*table)  # Pieces.of's, from the pieces' kernel
             saved = list(jit_base._MATCH)
             jit_base._MATCH[:] = [False]  # numpy's sines
             try:
