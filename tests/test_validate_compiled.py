@@ -235,7 +235,8 @@ def test_compiled_piece_flags_equal_the_numpy_ones():
 @pytest.mark.parametrize("category", CATEGORIES)
 def test_compiled_pieces_and_tables_equal_the_numpy_ones(category, numpy_path):
     """Pieces.of (rectangular rings as four boxes) and the SDF tables, with sines
-    from the kernel and from numpy; the tables' radial extents are Pieces.radial."""
+    from the kernel and from numpy, and as Pieces.of computes them with the arrays;
+    the tables' radial extents are Pieces.radial."""
     import artipg.validate.jit_contacts as jc
 
     def arrays(p):
@@ -248,6 +249,7 @@ def test_compiled_pieces_and_tables_equal_the_numpy_ones(category, numpy_path):
             assert arrays(p) == numpy_path(lambda: arrays(Pieces.of(obj, 7)))
             assert p._kinds == numpy_path(lambda: Pieces.of(obj, 7)._kinds)
             table = jc.piece_table(p)
+            assert _bytes(*p._sdf_table) == _bytes(*table)  # Pieces.of's, from the pieces' kernel
             saved = list(jit_base._MATCH)
             jit_base._MATCH[:] = [False]  # numpy's sines
             try:
@@ -385,6 +387,89 @@ def test_compiled_contact_graphs_equal_numpy(category):
                 ref = _contact_graphs(L, P, p, s["a"], s["b"], s["d"], tol)
                 got = contact_graphs(L, P, p.link, p.part, p.part_link, s["a"], s["b"], s["d"], floating)
                 assert _bytes(*got[:6]) == _bytes(*ref[:6]) and bool(got[6]) == bool(ref[6])
+
+
+def _numpy_verdicts(pieces, W0, c0, h0, scenes, tol):
+    """run_checks' numpy steps after the scenes: the refined rest rows, then each
+    scene's colliding rows and lowest distance (inf: none; rest: different links)."""
+    rest = scenes[0]
+    ra, rb, rd = rest["a"], rest["b"], rest["d"]
+    amb = (~(pieces.is_box[ra] & pieces.is_box[rb]) & (rd > tol.floating)).nonzero()[0]
+    if len(amb):
+        ia, ib = ra[amb], rb[amb]
+        lb = np.sqrt((np.maximum(np.abs(c0[ia] - c0[ib]) - h0[ia] - h0[ib], 0.0) ** 2).sum(axis=1))
+        amb = amb[lb <= tol.floating]
+    if len(amb):
+        rd[amb] = np.minimum(rd[amb], refine_distance(pieces, ra[amb], rb[amb], W0[ra[amb]], W0[rb[amb]], iters=3,
+                                                      stop_below=tol.floating))
+    out = []
+    for i, s in enumerate(scenes):
+        D = s["d"]
+        use = pieces.link[s["a"]] != pieces.link[s["b"]] if i == 0 else np.ones(len(D), dtype=bool)
+        out.append(((use & (D < -tol.penetration)).nonzero()[0], float(D[use].min()) if use.any() else np.inf))
+    return amb, out
+
+
+@pytest.mark.parametrize("category", CATEGORIES)
+def test_compiled_verdicts_equal_numpy(category):
+    """jit_verdicts: the rest rows refined (and whether their pieces lack samples),
+    the refined distances, every scene's colliding rows and lowest distance and the
+    contact graphs equal run_checks' numpy steps, under several tolerances, on
+    generated, stressed and broken objects."""
+    from artipg.validate.checks import _contact_graphs
+    from artipg.validate.jit_contacts import _H, _OFFS, _ON_SURFACE
+    from artipg.validate.jit_scenes import measure
+    from artipg.validate.jit_verdicts import verdicts
+
+    for seed in SEEDS:
+        for obj in _variants(category, seed):
+            kin = Kinematics.of(obj)
+            for tol in (Tolerances(), Tolerances(penetration=2e-4, floating=5e-3, open_fractions=(0.5, 1.0)),
+                        Tolerances(penetration=0.0, floating=0.03)):
+                p = Pieces.of(obj, _SAMPLE_SEED)
+                W0, c0, h0, scenes, (a, b, d, sizes, amb, undrawn) = measure(kin, p, tol, _OVERLAP)
+                assert bool(undrawn) == (not p._drawn[np.concatenate([a[amb], b[amb]])].all())
+                ref_d = [{**s, "d": s["d"].copy()} for s in scenes]
+                ref_amb, ref = _numpy_verdicts(p, W0, c0, h0, ref_d, tol)
+                assert amb.tobytes() == ref_amb.tobytes()
+                if undrawn:
+                    p.require(np.concatenate([a[amb], b[amb]]))
+                code, aux, _ = p.jit_table
+                L, P = kin.n_links, len(p.part_names)
+                bad, n_bad, low, comp, pcomp, has_geom, has_piece, several, split = verdicts(
+                    amb, a, b, W0, d, sizes, 3, 3, p.params, code, aux, p.points_t, p.start, p.count, _H,
+                    _ON_SURFACE, _OFFS, p.link, p.part, p.part_link, L, P, float(tol.floating),
+                    float(tol.penetration))
+                assert d.tobytes() == np.concatenate([s["d"] for s in ref_d]).tobytes()
+                assert _bytes(bad, n_bad) == _bytes(np.concatenate([r[0] for r in ref]), [len(r[0]) for r in ref])
+                # the sign of a zero may differ (numpy's min picks either): both give the
+                # same worst depth, max(0.0, -low)
+                assert (low + 0.0).tobytes() == (np.array([r[1] for r in ref]) + 0.0).tobytes()  # -0.0 + 0.0: 0.0
+                rest = ref_d[0]
+                g = _contact_graphs(L, P, p, rest["a"], rest["b"], rest["d"], tol)
+                assert _bytes(comp, pcomp, has_geom, has_piece, split) == _bytes(*g[:4], (g[5] > g[4]).nonzero()[0])
+                assert bool(several) == bool(g[6])
+
+
+def test_compiled_verdicts_lowest_distances_as_numpy_min():
+    """The lowest distance of a scene keeps a NaN (numpy's min), is inf without rows,
+    skips rest rows within one link; colliding rows are strictly below -penetration."""
+    from artipg.validate.jit_verdicts import verdicts
+
+    nan = np.nan
+    d = np.array([0.5, -2e-3, -1e-3, 0.2, nan, -0.5, 0.1, -5e-3])
+    a = np.array([0, 0, 1, 0, 0, 1, 0, 1])
+    b = np.array([1, 2, 2, 1, 1, 2, 1, 2])
+    link = np.array([0, 0, 1])  # pieces 0 and 1 share link 0
+    sizes = np.array([3, 0, 3, 2])
+    W0 = np.tile(np.eye(4), (3, 1, 1))
+    none = np.zeros(0, dtype=np.int64)
+    out = verdicts(none, a, b, W0, d, sizes, 3, 3, np.zeros((3, 5)), np.ones(3, dtype=np.int64),
+                   np.zeros((3, 20)), np.zeros((3, 0)), np.zeros(3, dtype=np.int64), np.zeros(3, dtype=np.int64),
+                   1e-6, 1e-5, np.zeros((6, 3)), link, np.arange(3), link, 2, 3, 2e-3, 1e-3)
+    bad, n_bad, low = out[:3]
+    assert bad.tolist() == [1, 2, 1] and n_bad.tolist() == [1, 0, 1, 1]  # rest row 2: -1e-3 is not below -1e-3
+    assert low[0] == -2e-3 and low[1] == np.inf and np.isnan(low[2]) and low[3] == -5e-3
 
 
 def test_compiled_blocked_joint_rows_equal_numpy():

@@ -77,9 +77,11 @@ def run_checks(kin: Kinematics, pieces: Pieces, tol: Tolerances = Tolerances()) 
         ``{"penetration": CheckResult, "floating": ..., "joint_sweep": ...}``.
     """
     if compiled.ENABLED and pieces.n <= _DENSE and _kernels_match():
-        from artipg.validate.jit_scenes import scenes as compiled_scenes
+        from artipg.validate.jit_scenes import measure
 
-        W0, c0, h0, scenes = compiled_scenes(kin, pieces, tol, _OVERLAP)
+        W0, c0, h0, scenes, rows = measure(kin, pieces, tol, _OVERLAP)
+        if rows[4] is not None:
+            return _compiled_results(kin, pieces, W0, scenes, rows, tol)
     else:
         W0, c0, h0, scenes = _scenes(kin, pieces, tol)
     rest_s = scenes[0]
@@ -98,6 +100,33 @@ def run_checks(kin: Kinematics, pieces: Pieces, tol: Tolerances = Tolerances()) 
         "penetration": _penetration(kin, pieces, rest_s, tol),
         "floating": _floating(kin, pieces, W0, rest_s, tol),
         "joint_sweep": _sweep_result(kin, pieces, scenes[1], scenes[2:], tol),
+    }
+
+
+def _compiled_results(kin, pieces, W0, scenes, rows, tol) -> dict[str, CheckResult]:
+    """:func:`run_checks` from the scenes of :func:`artipg.validate.jit_scenes.measure`
+    (``rows``: their pairs and distances concatenated, the rest rows to refine): the
+    refinement and the reductions of the distances in one kernel
+    (:func:`artipg.validate.jit_verdicts.verdicts`), the issues as the numpy code."""
+    from artipg.validate.jit_contacts import _H, _OFFS, _ON_SURFACE
+    from artipg.validate.jit_verdicts import verdicts
+
+    a, b, d, sizes, amb, undrawn = rows
+    if undrawn:
+        pieces.require(np.concatenate([a[amb], b[amb]]))
+    code, aux, _ = pieces.jit_table
+    (bad, n_bad, low, comp, pcomp, has_geom, has_piece, several, split) = verdicts(
+        amb, a, b, W0, d, sizes, 3, 3, pieces.params, code, aux, pieces.points_t, pieces.start, pieces.count, _H,
+        _ON_SURFACE, _OFFS, pieces.link, pieces.part, pieces.part_link, kin.n_links, len(pieces.part_names),
+        float(tol.floating), float(tol.penetration))
+    cut = np.concatenate([[0], n_bad.cumsum()])
+    low = low.tolist()
+    per = [(bad[cut[i]:cut[i + 1]], low[i]) for i in range(len(low))]
+    graphs = (comp, pcomp, has_geom, has_piece, split, several)
+    return {
+        "penetration": _penetration(kin, pieces, scenes[0], tol, per[0]),
+        "floating": _floating(kin, pieces, W0, scenes[0], tol, graphs),
+        "joint_sweep": _sweep_result(kin, pieces, scenes[1], scenes[2:], tol, per[1:]),
     }
 
 
@@ -270,10 +299,16 @@ def _worst_per_group(keys: np.ndarray, values: np.ndarray):
     return order[first]
 
 
-def _penetration(kin, pieces, s, tol) -> CheckResult:
+def _penetration(kin, pieces, s, tol, verdict=None) -> CheckResult:
+    """``verdict``: the colliding rows and the lowest distance between different
+    links (inf: none) when known (:func:`artipg.validate.jit_verdicts.verdicts`)."""
     a, b, D = s["a"], s["b"], s["d"]
-    cross = pieces.link[a] != pieces.link[b]
-    bad = (cross & (D < -tol.penetration)).nonzero()[0]
+    if verdict is None:
+        cross = pieces.link[a] != pieces.link[b]
+        bad = (cross & (D < -tol.penetration)).nonzero()[0]
+        low = float(D[cross].min()) if cross.any() else np.inf
+    else:
+        bad, low = verdict
     issues = []
     if len(bad):
         parts = np.sort(np.column_stack([pieces.part[a[bad]], pieces.part[b[bad]]]), axis=1)
@@ -282,7 +317,7 @@ def _penetration(kin, pieces, s, tol) -> CheckResult:
             pt = deepest_point(pieces, a[w], b[w], s["Wa"][w], s["Wb"][w])
             issues.append(Issue("penetration", "penetration", -float(D[w]), links, names, point=list(pt)))
     issues.sort(key=lambda i: -round(i.amount, 12))  # stable: ties keep their order
-    worst = max(0.0, float(-D[cross].min())) if cross.any() else 0.0
+    worst = max(0.0, -low)
     return CheckResult("penetration", not issues, worst, issues)
 
 
@@ -352,18 +387,24 @@ def _contact_graphs(L, P, pieces, a, b, D, tol):
     return comp, pcomp, has_geom, has_piece, lo, hi, several
 
 
-def _floating(kin, pieces, W0, s, tol) -> CheckResult:
+def _floating(kin, pieces, W0, s, tol, graphs=None) -> CheckResult:
+    """``graphs``: ``(comp, pcomp, has_geom, has_piece, split, several)`` when known
+    (:func:`artipg.validate.jit_verdicts.verdicts`)."""
     a, b, D = s["a"], s["b"], s["d"]
     issues = []
     L = kin.n_links
     P = len(pieces.part_names)
-    if compiled.ENABLED:
-        from artipg.validate.jit_scenes import contact_graphs
-
-        comp, pcomp, has_geom, has_piece, lo, hi, several = contact_graphs(
-            L, P, pieces.link, pieces.part, pieces.part_link, a, b, D, float(tol.floating))
+    if graphs is not None:
+        comp, pcomp, has_geom, has_piece, split, several = graphs
     else:
-        comp, pcomp, has_geom, has_piece, lo, hi, several = _contact_graphs(L, P, pieces, a, b, D, tol)
+        if compiled.ENABLED:
+            from artipg.validate.jit_scenes import contact_graphs
+
+            comp, pcomp, has_geom, has_piece, lo, hi, several = contact_graphs(
+                L, P, pieces.link, pieces.part, pieces.part_link, a, b, D, float(tol.floating))
+        else:
+            comp, pcomp, has_geom, has_piece, lo, hi, several = _contact_graphs(L, P, pieces, a, b, D, tol)
+        split = (hi > lo).nonzero()[0]
     # links: one contact graph holding the root (or the first link with geometry)
     if several:
         geo = has_geom.nonzero()[0]
@@ -380,7 +421,7 @@ def _floating(kin, pieces, W0, s, tol) -> CheckResult:
                                 detail="does not touch the rest of the object (parent: " + ", ".join(parents) + ")"))
     # parts: the parts of each link form one contact graph; links whose parts fall
     # into more than one component
-    split = (hi > lo).nonzero()[0].tolist()
+    split = split.tolist()
     if split:
         weight = np.bincount(pieces.part, weights=np.prod(2 * pieces.half, axis=1), minlength=P)
     for li in split:
@@ -497,12 +538,17 @@ def _blocked_rows(kin, pieces, pairs, Qs):
     return (np.concatenate(A), np.concatenate(B), np.concatenate(Wa), np.concatenate(Wb), np.concatenate(owner))
 
 
-def _sweep_result(kin, pieces, sw, opens, tol) -> CheckResult:
+def _sweep_result(kin, pieces, sw, opens, tol, verdicts=None) -> CheckResult:
+    """``verdicts``: the colliding rows and the lowest distance (inf: no rows) of the
+    sweep and of each open scene when known (:func:`artipg.validate.jit_verdicts.verdicts`)."""
+    if verdicts is None:
+        verdicts = [((s["d"] < -tol.penetration).nonzero()[0], float(s["d"].min()) if len(s["d"]) else np.inf)
+                    for s in [sw] + list(opens)]
     issues = []
     D = sw["d"]
-    worst = max(0.0, float(-D.min())) if len(D) else 0.0
+    bad, low = verdicts[0]
+    worst = max(0.0, -low)
     info = {"joints": int(len(sw["movable"])), "poses": int(len(sw["q"])), "open_poses": len(opens)}
-    bad = (D < -tol.penetration).nonzero()[0]
     if len(bad):
         # a collision with a part another joint moves is no fault when opening that
         # joint clears the way (racks behind a door): keep the rest
@@ -524,11 +570,9 @@ def _sweep_result(kin, pieces, sw, opens, tol) -> CheckResult:
             pt = deepest_point(pieces, sw["a"][w], sw["b"][w], sw["Wa"][w], sw["Wb"][w])
             issues.append(Issue("joint_sweep", "sweep_penetration", -float(D[w]), links, names,
                                 joint=kin.joint_names[i], q=float(sw["q"][sc]), point=list(pt)))
-    for s in opens:
+    for s, (bad, low) in zip(opens, verdicts[1:]):
         D = s["d"]
-        if len(D):
-            worst = max(worst, float(-D.min()))
-        bad = (D < -tol.penetration).nonzero()[0]
+        worst = max(worst, -low)
         if len(bad):
             keys = np.column_stack([pieces.link[s["a"][bad]], pieces.link[s["b"][bad]]])
             for w in bad[_worst_per_group(keys, D[bad])]:

@@ -18,10 +18,11 @@ from artipg.geometry.box import Cuboid, RectRing
 from artipg.geometry.revolve import Frustum, Ring, Sphere, Torus
 from artipg.kernel_cache import drop_stale_caches
 from artipg.validate.jit_base import apply, copy4
-from artipg.validate import jit_base, shapes
+from artipg.validate.jit_contacts import SDF_CODES, _table_trig
+from artipg.validate import jit_base, jit_contacts, shapes
 from artipg.validate.shapes import _CODES
 
-drop_stale_caches(__file__, [jit_base.__file__, shapes.__file__])
+drop_stale_caches(__file__, [jit_base.__file__, jit_contacts.__file__, shapes.__file__])
 
 # the template codes of Pieces' flags (constants of the kernel)
 _BOX, _FRUSTUM, _RING, _SPHERE, _TORUS = _CODES[Cuboid], _CODES[Frustum], _CODES[Ring], _CODES[Sphere], _CODES[Torus]
@@ -29,10 +30,12 @@ _FULL_TURN = 2 * np.pi - 1e-9
 
 
 def pieces_arrays(table, local, codes):
-    """``(link, part, T, center, half, params, kinds, flags)`` of the pieces of a
-    primitive table (``local``: its primitives' local boxes (N, 2, 3)) as
+    """``(link, part, T, center, half, params, kinds, flags, sdf_table)`` of the pieces
+    of a primitive table (``local``: its primitives' local boxes (N, 2, 3)) as
     :meth:`Pieces.of` makes them, ``kinds`` and ``flags`` as ``Pieces(kinds=...,
-    flags=...)`` take them (``codes``: the templates' codes, ``shapes._CODES``)."""
+    flags=...)`` take them (``codes``: the templates' codes, ``shapes._CODES``), and
+    their :attr:`Pieces.jit_table` (:func:`artipg.validate.jit_contacts.piece_table`;
+    None where a template has no compiled SDF)."""
     groups = table.groups
     index: dict = {}
     kind, ring, width = [], [], 0
@@ -52,10 +55,30 @@ def pieces_arrays(table, local, codes):
             k += len(g.P)
     sizes = np.array([len(g.P) for g in groups], dtype=np.int64)
     kind_code = np.array([codes.get(t, 0) for t in index], dtype=np.int64)
-    link, part, T, center, half, params, kind_of, code, is_box, is_ball, symmetric = _assemble(
-        order, P, sizes, np.array(ring, dtype=np.bool_), np.array(kind, dtype=np.int64), kind_code, width,
+    sdf_code = np.array([SDF_CODES.get(t, 0) for t in index], dtype=np.int64)
+    (link, part, T, center, half, params, kind_of, code, is_box, is_ball, symmetric, piece_sdf, aux, radial) = _arrays(
+        order, P, sizes, np.array(ring, dtype=np.bool_), np.array(kind, dtype=np.int64), kind_code, sdf_code, width,
         table.prim_T, table.prim_link, table.prim_part, local)
-    return link, part, T, center, half, params, (list(index), kind_of), (code, is_box, is_ball, symmetric)
+    sdf_table = (piece_sdf, aux, radial) if sdf_code.all() else None
+    return (link, part, T, center, half, params, (list(index), kind_of), (code, is_box, is_ball, symmetric),
+            sdf_table)
+
+
+@numba.njit(cache=True)
+def _arrays(order, P, sizes, ring, kind, kind_code, sdf_code, width, prim_T, prim_link, prim_part, local):
+    """:func:`_assemble`, then (every template having an SDF code ``sdf_code``) the
+    pieces' SDF codes and :func:`artipg.validate.jit_contacts._table_trig` (empty
+    tables otherwise)."""
+    link, part, T, center, half, params, kind_of, code, is_box, is_ball, symmetric = _assemble(
+        order, P, sizes, ring, kind, kind_code, width, prim_T, prim_link, prim_part, local)
+    piece_sdf = np.empty(len(kind_of), dtype=np.int64)
+    for m in range(len(kind_of)):
+        piece_sdf[m] = sdf_code[kind_of[m]]
+    if np.all(sdf_code != 0):
+        aux, radial = _table_trig(piece_sdf, params)
+    else:
+        aux, radial = np.zeros((0, 0)), np.zeros((0, 2))
+    return link, part, T, center, half, params, kind_of, code, is_box, is_ball, symmetric, piece_sdf, aux, radial
 
 
 @numba.njit(cache=True)

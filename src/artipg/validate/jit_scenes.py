@@ -35,19 +35,30 @@ drop_stale_caches(__file__, [jit_base.__file__, jit_pairs.__file__, kinematics._
 def scenes(kin, pieces, tol, overlap: float):
     """The rest, sweep and open scenes of :func:`artipg.validate.checks.run_checks`
     with their distances ``"d"``: ``(W0, c0, h0, [rest, sweep, open...])``."""
+    return measure(kin, pieces, tol, overlap)[:4]
+
+
+def measure(kin, pieces, tol, overlap: float):
+    """:func:`scenes` and ``(a, b, d, sizes, amb, undrawn)``: every scene's pairs and
+    distances concatenated (the scenes' arrays are views of them), the rows per scene,
+    and the rest rows ``run_checks`` refines with whether one of their pieces has no
+    samples yet (:func:`artipg.validate.jit_verdicts.ambiguous`); ``amb`` is None where
+    the pieces have no compiled SDFs."""
     fracs = np.asarray(tol.open_fractions, dtype=float) if len(kin.movable()) >= 2 else np.zeros(0)
     (W0, c0, h0, a, b, Wa, Wb, margin, sizes, sw_scene, sw_joint, sw_q, box, ball, other, src, tgt, rel,
      keep) = build(kin.parent, kin.origin, kin.type_codes, kin.axis, kin.limits, kin.movable(), pieces.link,
                    pieces.part, pieces.T, pieces.center, pieces.half, pieces.symmetric, pieces.is_box, pieces.is_ball,
                    float(tol.floating), int(tol.sweep_poses), fracs, float(overlap))
+    amb = undrawn = None
     if pieces.jit_table is not None:
-        from artipg.validate.jit_contacts import _pair_distance
+        from artipg.validate.jit_verdicts import distances
 
         code, aux, radial = pieces.jit_table
         if len(other):
             pieces.require(src[keep])
-        d = _pair_distance(a, b, Wa, Wb, margin, box, ball, other, src, tgt, rel, keep, pieces.params, code, aux,
-                           pieces.center, pieces.half, radial, pieces.points_t, pieces.start, pieces.count)
+        d, amb, undrawn = distances(a, b, Wa, Wb, margin, box, ball, other, src, tgt, rel, keep, pieces.params, code,
+                                    aux, pieces.center, pieces.half, radial, pieces.points_t, pieces.start,
+                                    pieces.count, sizes[0], c0, h0, pieces.is_box, pieces._drawn, float(tol.floating))
     else:
         from artipg.validate.contacts import pair_distance
 
@@ -63,7 +74,7 @@ def scenes(kin, pieces, tol, overlap: float):
             s["frac"] = tol.open_fractions[i - 2]
         out.append(s)
         k += n
-    return W0, c0, h0, out
+    return W0, c0, h0, out, (a, b, d, sizes, amb, undrawn)
 
 
 @numba.njit(cache=True)

@@ -174,6 +174,9 @@ class Pieces:
         (:mod:`artipg.validate.compiled`)."""
         if not compiled.ENABLED or any(g is None for g in self._kinds) or not _kernels_match():
             return None
+        given = self.__dict__.get("_sdf_table")  # by Pieces.of (pieces_arrays)
+        if given is not None:
+            return given
         from artipg.validate.jit_contacts import SDF_CODES, piece_table
 
         if any(g not in SDF_CODES for g in self._kinds):
@@ -336,9 +339,11 @@ class Pieces:
         if compiled.ENABLED and local is not None and table.groups and _kernels_match():
             from artipg.validate.jit_pieces import pieces_arrays
 
-            link, part, T, center, half, params, kinds, flags = pieces_arrays(table, local, _CODES)
-            return cls(link, part, T, center, half, None, params, part_names, obj.part_link, rng, kinds=kinds,
-                       flags=flags)
+            link, part, T, center, half, params, kinds, flags, sdf_table = pieces_arrays(table, local, _CODES)
+            pieces = cls(link, part, T, center, half, None, params, part_names, obj.part_link, rng, kinds=kinds,
+                         flags=flags)
+            pieces._sdf_table = sdf_table  # jit_table's, computed with the arrays
+            return pieces
         index: dict = {}  # templates in order of appearance
         Ps, Ts, links, parts, boxes, kind = [], [], [], [], [], []
         for g in table.groups:
