@@ -127,3 +127,18 @@ def test_button_region_box():
         face = prim.params[1:3] if tmpl is controls.rect_button else (2 * prim.params[0],) * 2
         ref = np.array([[x - 1e-4, -face[0] / 2, -face[1] / 2], [x + 1e-4, face[0] / 2, face[1] / 2]])
         assert part.regions["press"].box.tobytes() == ref.tobytes()
+
+
+def test_tube_function_is_the_tube_primitives():
+    from artipg.geometry.tube import Tube, arc, line, tube
+
+    paths = [([line(0.03), arc(0.01, -math.pi / 2), line(0.2), arc(0.01, -math.pi / 2), line(0.03)], math.pi),
+             ([line(0.1)], 0.3), ([arc(0.05, math.pi)], -0.0), ([line(0.02), arc(0.03, 2.0)], math.pi / 2)]
+    for segs, heading in paths:
+        for pose in (IDENTITY, translation(0.1, -0.0, -0.2), rot_y(0.4) @ translation(0.0, 0.1, 0.0)):
+            got = tube(0.004, segs, heading, pose, role="grip")
+            ref = Tube(0.004, tuple(segs), heading).primitives(pose, "grip")
+            assert len(got) == len(ref) == len(segs)
+            for a, b in zip(got, ref):
+                assert a.geom is b.geom and a.params == b.params and a.role == b.role == "grip"
+                assert a.pose.tobytes() == b.pose.tobytes()
