@@ -20,7 +20,7 @@ from __future__ import annotations
 import math
 
 from artipg.geometry import cuboid_between
-from artipg.geometry.transforms import rot_y, translation
+from artipg.geometry.transforms import rot_y, translated, translation
 from artipg.model.part import Part
 from artipg.rules import Category, Slot
 from artipg.templates.appliance import control_panel, display
@@ -90,9 +90,9 @@ def door(ctx):
     dp = link.link.parts[0]
     hd = (top - zf) / 2
     if ctrl == "door_front":
-        panel_pose, parent = dp.pose @ translation(-t, 0, hd - cs / 2), link
+        panel_pose, parent = translated(dp.pose, -t, 0, hd - cs / 2), link
     elif ctrl == "door_top":
-        panel_pose, parent = dp.pose @ translation(-t / 2, 0, hd) @ _UP, link
+        panel_pose, parent = translated(dp.pose, -t / 2, 0, hd) @ _UP, link
     else:
         parent = root
     _controls(ctx, parent, panel_pose, W, cs if ctrl != "door_top" else t, ctrl)
@@ -107,14 +107,14 @@ def _controls(ctx, parent, pose, W, band, ctrl):
         r = min(0.03, band / 2 - 0.008)
         knob = ctx.choose("knob", KNOBS)(p.scope("knob"), radius=r)
         s = p.choice("knob_side", (-1, 1))
-        mount_knob(ctx.builder, parent, knob, pose @ translation(0, s * (W / 2 - 0.03 - r), 0), continuous=True)
+        mount_knob(ctx.builder, parent, knob, translated(pose, 0, s * (W / 2 - 0.03 - r), 0), continuous=True)
         y = W / 2 - 0.08 - 2 * r
         lo, hi = (-y, W / 2 - 0.06) if s < 0 else (-(W / 2 - 0.06), y)
     else:
         lo, hi = -y, y
     if ctrl != "door_top" and p.flag("display", 0.5):
         dw = 0.25 * (hi - lo)
-        parent.add(display(p.scope("display"), dw, 0.5 * band), pose @ translation(0, hi - dw / 2, 0))
+        parent.add(display(p.scope("display"), dw, 0.5 * band), translated(pose, 0, hi - dw / 2, 0))
         hi -= dw + 0.02
     tmpl = ctx.choose("button", BUTTONS)
     size = min(0.02, band - 0.02)

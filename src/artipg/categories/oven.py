@@ -21,7 +21,7 @@ from __future__ import annotations
 import math
 
 from artipg.geometry import cuboid_between
-from artipg.geometry.transforms import translation
+from artipg.geometry.transforms import translated, translation
 from artipg.model.part import Part, Region
 from artipg.rules import Category, Slot
 from artipg.templates.appliance import appliance_housing, control_panel, display
@@ -71,7 +71,7 @@ def _countertop(ctx, root, W, H, D):
     pose = translation(-D / 2, y0 - bay / 2 - gap / 2, (H + zf) / 2)
     root.add(cp, pose)
     return {"t": p.uniform("door_thickness", 0.02, 0.03), "doors": [(y0 + gap, W / 2, zf, H)],
-            "panel": ("column", pose @ translation(*cp.anchors["front"]), bay - gap, H - zf, 0)}
+            "panel": ("column", translated(pose, *cp.anchors["front"]), bay - gap, H - zf, 0)}
 
 
 def _cooktop(ctx, root, W, H, D):
@@ -179,7 +179,7 @@ def _controls(ctx, root, panel):
         return
     lo, hi = -w / 2 + 0.05 + (2 * r + 0.025) * (1 + (n > 2)) + 0.02, w / 2 - 0.05 - 2 * r - 0.045
     if p.flag("display", 0.7):
-        root.add(display(p.scope("display"), 0.3 * (hi - lo), 0.5 * h), pose @ translation(0, (lo + hi) / 2, h / 5))
+        root.add(display(p.scope("display"), 0.3 * (hi - lo), 0.5 * h), translated(pose, 0, (lo + hi) / 2, h / 5))
     tmpl, k = ctx.choose("button", BUTTONS), p.integers("buttons", 2, max(2, min(5, int((hi - lo) / 0.034))))
     mount_button_row(p, ctx.builder, root, tmpl, k, pose, lo, hi, -h / 4, radius=0.007, square=(0.016, 0.011))
 

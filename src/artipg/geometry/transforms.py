@@ -24,6 +24,39 @@ def translation(x: float = 0.0, y: float = 0.0, z: float = 0.0) -> np.ndarray:
     return T
 
 
+_EYE_FLAT = _EYE.ravel().tolist()
+
+
+def shift_of(T: np.ndarray) -> tuple[float, float, float] | None:
+    """``(x, y, z)`` of ``T`` (4, 4) when it is a pure translation (its rotation block
+    the identity and bottom row ``(0, 0, 0, 1)``, zeros of either sign), else None."""
+    if T is IDENTITY:
+        return (0.0, 0.0, 0.0)
+    a = T.ravel().tolist()
+    t = (a[3], a[7], a[11])
+    a[3] = a[7] = a[11] = 0.0
+    return t if a == _EYE_FLAT else None
+
+
+def translated(T: np.ndarray, x: float = 0.0, y: float = 0.0, z: float = 0.0) -> np.ndarray:
+    """``T @ translation(x, y, z)`` (4, 4) bit for bit, for finite ``T`` and ``x, y, z`` (metres).
+
+    When ``T`` is a pure translation (see :func:`shift_of`; the poses that the mounting
+    helpers give panels are) the product is made without a matrix product: each entry
+    of its last column sums two non-zero terms at most (``T[i, 3]`` and the argument),
+    rounded once in any order, and a product's sums start at +0.0, so its zeros are
+    +0.0 (see :class:`Placer`): ``(T[i, 3] + x) + 0.0``. Other ``T`` take the product.
+    """
+    s = shift_of(T)
+    if s is None:
+        return T @ translation(x, y, z)
+    R = _EYE.copy()
+    R[0, 3] = (s[0] + float(x)) + 0.0
+    R[1, 3] = (s[1] + float(y)) + 0.0
+    R[2, 3] = (s[2] + float(z)) + 0.0
+    return R
+
+
 class Placer:
     """A constant rigid transform ``M`` to be placed at many points.
 

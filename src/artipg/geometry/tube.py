@@ -32,6 +32,55 @@ def arc(radius: float, turn: float) -> tuple:
     return ("arc", float(radius), float(turn))
 
 
+def _walk(segments: tuple, heading: float):
+    """Yield (segment, start (x, z), heading α) along the path (plain floats)."""
+    x = z = 0.0
+    a = heading
+    for seg in segments:
+        yield seg, (x, z), a
+        if seg[0] == "line":
+            x += math.cos(a) * seg[1]
+            z += math.sin(a) * seg[1]
+        else:
+            R, turn = seg[1], seg[2]
+            sg = R if turn > 0 else -R
+            cx, cz = x - math.sin(a) * sg, z + math.cos(a) * sg
+            a += turn
+            x, z = cx + math.sin(a) * sg, cz - math.cos(a) * sg
+
+
+def _primitives(r: float, segments: tuple, heading: float, pose: np.ndarray, role: str) -> list[Primitive]:
+    """:meth:`Tube.primitives` of ``Tube(r, segments, heading)`` (without making the Tube)."""
+    n = len(segments)
+    kinds, params, frames = [], [], []
+    for i, (seg, (x, z), a) in enumerate(_walk(segments, heading)):
+        c0, c1 = float(i == 0), float(i == n - 1)
+        ca, sa = math.cos(a), math.sin(a)
+        if seg[0] == "line":
+            L = seg[1]
+            # local z -> heading (ca, 0, sa); local x -> (sa, 0, -ca); local y -> y
+            frames += (sa, 0.0, ca, x + ca * L / 2, 0.0, 1.0, 0.0, 0.0,
+                       -ca, 0.0, sa, z + sa * L / 2, 0.0, 0.0, 0.0, 1.0)
+            kinds.append(Frustum)
+            params.append((r, r, L, c0, c1))
+        else:
+            R, turn = seg[1], seg[2]
+            sg = 1.0 if turn > 0 else -1.0
+            # centre is R to the left (sg > 0) or right of the heading
+            cx, cz = x - sa * R * sg, z + ca * R * sg
+            ex = ((x - cx) / R, 0.0, (z - cz) / R)  # local x: centre -> start
+            ey = (ca, 0.0, sa)  # local y: heading at the start
+            ez = (ex[1] * ey[2] - ex[2] * ey[1], ex[2] * ey[0] - ex[0] * ey[2], ex[0] * ey[1] - ex[1] * ey[0])
+            frames += (ex[0], ey[0], ez[0], cx, ex[1], ey[1], ez[1], 0.0,
+                       ex[2], ey[2], ez[2], cz, 0.0, 0.0, 0.0, 1.0)
+            kinds.append(Torus)
+            params.append((R, r, abs(turn), c0, c1))
+    # one stacked product places every piece (the same 4x4 product for each)
+    placed = pose @ np.fromiter(frames, float, 16 * n).reshape(n, 4, 4)  # fromiter: faster than np.array
+    new = tuple.__new__  # Primitive(...) without the NamedTuple's Python-level __new__
+    return [new(Primitive, (g, p, T, role)) for g, p, T in zip(kinds, params, placed)]
+
+
 @dataclass(frozen=True)
 class Tube:
     """A tube of radius ``r`` along ``segments`` (see :func:`line`, :func:`arc`)."""
@@ -42,19 +91,7 @@ class Tube:
 
     def _walk(self):
         """Yield (segment, start (x, z), heading α) along the path (plain floats)."""
-        x = z = 0.0
-        a = self.heading
-        for seg in self.segments:
-            yield seg, (x, z), a
-            if seg[0] == "line":
-                x += math.cos(a) * seg[1]
-                z += math.sin(a) * seg[1]
-            else:
-                R, turn = seg[1], seg[2]
-                sg = R if turn > 0 else -R
-                cx, cz = x - math.sin(a) * sg, z + math.cos(a) * sg
-                a += turn
-                x, z = cx + math.sin(a) * sg, cz - math.cos(a) * sg
+        return _walk(self.segments, self.heading)
 
     def end(self) -> tuple[np.ndarray, float]:
         """End point (3,) and heading angle of the centre line."""
@@ -71,35 +108,7 @@ class Tube:
 
     def primitives(self, pose: np.ndarray = IDENTITY, role: str = "") -> list[Primitive]:
         """The tube as open cylinders and torus arcs, capped at both ends, in ``pose``."""
-        n = len(self.segments)
-        r = self.r
-        kinds, params, frames = [], [], []
-        for i, (seg, (x, z), a) in enumerate(self._walk()):
-            c0, c1 = float(i == 0), float(i == n - 1)
-            ca, sa = math.cos(a), math.sin(a)
-            if seg[0] == "line":
-                L = seg[1]
-                # local z -> heading (ca, 0, sa); local x -> (sa, 0, -ca); local y -> y
-                frames += (sa, 0.0, ca, x + ca * L / 2, 0.0, 1.0, 0.0, 0.0,
-                           -ca, 0.0, sa, z + sa * L / 2, 0.0, 0.0, 0.0, 1.0)
-                kinds.append(Frustum)
-                params.append((r, r, L, c0, c1))
-            else:
-                R, turn = seg[1], seg[2]
-                sg = 1.0 if turn > 0 else -1.0
-                # centre is R to the left (sg > 0) or right of the heading
-                cx, cz = x - sa * R * sg, z + ca * R * sg
-                ex = ((x - cx) / R, 0.0, (z - cz) / R)  # local x: centre -> start
-                ey = (ca, 0.0, sa)  # local y: heading at the start
-                ez = (ex[1] * ey[2] - ex[2] * ey[1], ex[2] * ey[0] - ex[0] * ey[2], ex[0] * ey[1] - ex[1] * ey[0])
-                frames += (ex[0], ey[0], ez[0], cx, ex[1], ey[1], ez[1], 0.0,
-                           ex[2], ey[2], ez[2], cz, 0.0, 0.0, 0.0, 1.0)
-                kinds.append(Torus)
-                params.append((R, r, abs(turn), c0, c1))
-        # one stacked product places every piece (the same 4x4 product for each)
-        placed = pose @ np.array(frames).reshape(n, 4, 4)
-        new = tuple.__new__  # Primitive(...) without the NamedTuple's Python-level __new__
-        return [new(Primitive, (g, p, T, role)) for g, p, T in zip(kinds, params, placed)]
+        return _primitives(self.r, self.segments, self.heading, pose, role)
 
     def _stations(self, step: float = math.pi / 16):
         """Centre-line stations (point (3,), heading) for the loft."""
@@ -159,4 +168,4 @@ class Tube:
 
 def tube(r: float, segments, heading: float = 0.0, pose: np.ndarray = IDENTITY, role: str = "") -> list[Primitive]:
     """Primitives of a :class:`Tube` placed at ``pose`` (see module docstring)."""
-    return Tube(float(r), tuple(segments), heading).primitives(pose, role)
+    return _primitives(float(r), tuple(segments), heading, pose, role)  # Tube(...).primitives(), no Tube made

@@ -33,7 +33,7 @@ import math
 import numpy as np
 
 from artipg.geometry import Cuboid, cuboid, frustum, prism, rect_ring, ring
-from artipg.geometry.transforms import Placer, rot_y, rot_z, translation
+from artipg.geometry.transforms import Placer, rot_y, rot_z, shift_of, translation
 from artipg.model.part import Deferred, Grasp, Part, Region
 
 _ALONG_X = rot_y(math.pi / 2)    # local z -> +x (frustum r_bottom at the front, -x)
@@ -119,7 +119,8 @@ KNOBS = {round_knob: 2.0, pointer_knob: 1.5, fluted_knob: 1.0, dial_knob: 1.0}
 
 def _button_part(template, prims, stand, depth, travel, face, sem="button", act="slider_button") -> Part:
     x = -stand - depth
-    box = np.array([[x - 1e-4, -face[0] / 2, -face[1] / 2], [x + 1e-4, face[0] / 2, face[1] / 2]])
+    w, h = face[0] / 2, face[1] / 2
+    box = np.array((x - 1e-4, -w, -h, x + 1e-4, w, h)).reshape(2, 3)  # a flat tuple converts faster
     cap = Region(("cap",), box)
     return Part(sem, template, prims,
                 anchors={"front": (x, 0.0, 0.0), "back": (-stand, 0.0, 0.0), "stop": (-stand + travel, 0.0, 0.0)},
@@ -211,9 +212,18 @@ def mount_poses(pose: np.ndarray, yz) -> list:
     """
     n = len(yz)
     T = _EYES[:n].copy() if n <= len(_EYES) else np.tile(_EYES[0], (n, 1, 1))
-    if n:
+    if not n:
+        return []
+    s = shift_of(pose)
+    if s is None:
         T[:, 1:3, 3] = yz
-    return list(pose @ T)
+        return list(pose @ T)
+    # a panel frame that is a pure translation (the usual case): each product made
+    # without the product, as transforms.translated makes it
+    x, y, z = s
+    T[:, 0, 3] = x + 0.0
+    T[:, 1:3, 3] = [((y + float(b)) + 0.0, (z + float(c)) + 0.0) for b, c in yz]
+    return list(T)
 
 
 def mount_knob(builder, parent, part, pose: np.ndarray, *, continuous: bool, limits=(0.0, 2 * math.pi),

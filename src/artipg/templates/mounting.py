@@ -12,9 +12,10 @@ import math
 
 import numpy as np
 
-from artipg.geometry.transforms import rot_x, translation
+from artipg.geometry.transforms import Placer, rot_x, shift_of, translated, translation
 
 _HORIZONTAL = rot_x(math.pi / 2)  # handle frame turned so its long axis runs along y
+_HORIZONTAL_AT = Placer(_HORIZONTAL)  # translation(x, y, z) @ _HORIZONTAL as _HORIZONTAL_AT.at(x, y, z)
 
 # hinge side -> (edge direction in (y, z), joint axis); "+y" is the viewer's left
 _HINGES = {
@@ -59,9 +60,10 @@ def mount_hinged(builder, parent, part, *, front_x: float, center_yz, size_yz, s
     cy, cz = center_yz
     hy, hz = cy + ey * size_yz[0] / 2, cz + ez * size_yz[1] / 2
     link = builder.create_link(name, parent)
-    origin = translation(front_x - t, hy, hz)
-    if parent_pose is not None:
-        origin = parent_pose @ origin
+    if parent_pose is None:
+        origin = translation(front_x - t, hy, hz)
+    else:
+        origin = translated(parent_pose, front_x - t, hy, hz)
     link.set_joint("revolute", origin, axis=axis, limits=limits)
     link.add(part, translation(t, cy - hy, cz - hz))
     return link
@@ -81,8 +83,14 @@ def handle_pose(front_pose: np.ndarray, thickness: float, y: float, z: float, ho
 
     ``front_pose`` is the panel part's pose in its link; y, z are in the panel frame.
     """
-    T = front_pose @ translation(-thickness, y, z)
-    return T @ _HORIZONTAL if horizontal else T
+    s = shift_of(front_pose)
+    if s is None:
+        T = front_pose @ translation(-thickness, y, z)
+        return T @ _HORIZONTAL if horizontal else T
+    # the panel poses of mount_hinged and mount_sliding are pure translations: the
+    # products made without a product, as transforms.translated and Placer make them
+    x, y, z = s[0] - float(thickness), s[1] + float(y), s[2] + float(z)
+    return _HORIZONTAL_AT.at(x, y, z) if horizontal else translation(x + 0.0, y + 0.0, z + 0.0)
 
 
 def free_edge_yz(side: str, size_yz, margin: float) -> tuple[float, float]:

@@ -21,7 +21,9 @@ from artipg.model.part import Part, Region
 
 _YZ = Placer(rot_y(math.pi / 2))  # rect ring in the y-z plane: local x -> -z (height), y -> y
 _XZ = Placer(rot_x(math.pi / 2))  # rect ring in the x-z plane: local x -> x, local y -> z
-_ARM_TURNS = (rot_z(0.0), rot_z(math.pi / 2))  # a spray arm's first and second bar
+# a spray arm's first and second bar: turn @ translation(0, 0, z) as turn.at(0, 0, z) (a turn
+# about z commutes with a shift along z, and Placer makes that product bit for bit)
+_ARM_TURNS = (Placer(rot_z(0.0)), Placer(rot_z(math.pi / 2)))
 
 
 def door_bins(p, y0: float, y1: float, z0: float, z1: float, depth: float, n: int | None = None) -> Part:
@@ -86,7 +88,7 @@ def spray_arm(p, radius: float, height: float) -> Part:
     bars = p.choice("bars", (1, 2))
     prims = [cylinder(hub_r, height, translation(0, 0, height / 2), role="hub")]
     for i in range(bars):
-        prims.append(cuboid(2 * radius, w, 0.6 * height, _ARM_TURNS[i] @ translation(0, 0, 0.7 * height),
+        prims.append(cuboid(2 * radius, w, 0.6 * height, _ARM_TURNS[i].at(0, 0, 0.7 * height),
                             role="arm"))
     return Part("arm", "spray_arm", prims, regions={"rotate": Region(("arm",))})
 
