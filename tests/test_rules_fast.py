@@ -162,6 +162,55 @@ def test_uniform_records_what_param_init_does():
     assert rec.record["s.b"].value == 0.7
 
 
+@pytest.mark.parametrize("overrides", [{}, {"s.n": 9, "s.c": "y", "s.f": True}])
+def test_integer_choice_and_flag_record_what_param_init_does(overrides):
+    rec = ParamRecorder(np.random.default_rng(4), overrides=overrides)
+    p = rec.scope("s")
+    opts = {"x": 1.0, "y": 2.0, "z": 0.5}
+    n, c, f = p.integers("n", 2, 5), p.choice("c", opts), p.flag("f", 0.4)
+    refs = [Param("s.n", "integer", n, 2, 5), Param("s.c", "choice", c, None, None, ("x", "y", "z")),
+            Param("s.f", "flag", f, None, None, (False, True))]
+    assert list(rec.record) == [r.name for r in refs]
+    for got, ref in zip(rec.record.values(), refs):
+        assert type(got) is Param and got == ref and repr(got) == repr(ref)
+        assert [type(getattr(got, fl.name)) for fl in dataclasses.fields(Param)] == \
+            [type(getattr(ref, fl.name)) for fl in dataclasses.fields(Param)]
+    if overrides:
+        assert (n, c, f) == (5, "y", True)
+
+
+def test_choose_records_the_option_names_of_choice():
+    def tmpl_a():
+        pass
+
+    def tmpl_b():
+        pass
+
+    record, templates = {}, {}
+    ctx = category_module.SlotContext(ParamRecorder(np.random.default_rng(6), record).scope("door"), "sub", {},
+                                      ObjectBuilder(record), templates, "door")
+    ref = ParamRecorder(np.random.default_rng(6)).scope("door")
+    options = [{tmpl_a: 1.0, tmpl_b: 3.0}, ("p", "q"), [tmpl_b, tmpl_a]]
+    got = [ctx.choose(f"t{i % 3}_{i}", options[i % 3]) for i in range(30)]
+    want = [ref.choice(f"t{i % 3}_{i}", options[i % 3]) for i in range(30)]
+    assert got == want and ref.record == record
+    assert ctx.choose("fixed", options[0], fixed=tmpl_a) is tmpl_a and record["door.fixed"].value == "tmpl_a"
+    names = [getattr(t, "__name__", t) for t in want] + ["tmpl_a"]
+    assert templates == {"door": names}
+
+
+def test_create_link_makes_the_dataclass_link():
+    import artipg.model.articulation as art
+
+    b = ObjectBuilder()
+    root = b.create_link("base")
+    child = b.create_link("lid", root)
+    for lb, name in [(root, "base_0"), (child, "lid_0")]:
+        ref = art.Link(name)
+        assert type(lb.link) is art.Link and vars(lb.link) == vars(ref) and lb.link.parts is not ref.parts
+    assert root.link.parts is not child.link.parts
+
+
 def test_scoped_keys_are_the_dotted_names():
     rec = ParamRecorder(np.random.default_rng(3), prefix="")
     a = rec.scope("a")

@@ -155,7 +155,11 @@ class ObjectBuilder:
         lb._shared = shared = self._shared
         lb.name = name = _unique(shared.names, name)
         lb.parent = parent
-        lb.link = Link(name)
+        # Link(name) without its __init__ call (the same fields)
+        lb.link = link = _new(Link)
+        link.name = name
+        link.parts = []
+        link.joint = None
         links.append(lb)
         return lb
 

@@ -16,7 +16,7 @@ from typing import Any, Callable
 from artipg.materials import CLASS_DENSITY
 from artipg.model.articulation import ArticulatedObject
 from artipg.model.builder import ObjectBuilder
-from artipg.rules.params import ParamRecorder, option_name
+from artipg.rules.params import ParamRecorder
 from artipg.rules.streams import stream_key, streams
 
 
@@ -58,8 +58,8 @@ class SlotContext:
 
     def choose(self, name: str, options, fixed=None):
         """Choose a part template (weighted dict or list) and record the choice."""
-        t = self.p.choice(name, options, fixed=fixed)
-        self.templates.setdefault(self.slot, []).append(option_name(t))
+        t, chosen = self.p._pick(name, options, fixed)
+        self.templates.setdefault(self.slot, []).append(chosen)
         return t
 
 

@@ -151,6 +151,7 @@ class _Draws:
 
 
 _new = object.__new__
+_FLAG_OPTIONS = (False, True)
 
 
 class ParamRecorder:
@@ -274,7 +275,14 @@ class ParamRecorder:
             o = self.overrides.get(key)
             if o is not None:
                 v = min(hi, max(lo, int(round(o))))
-        self.record[key] = Param(key, "integer", v, lo, hi)
+        p = _new(Param)  # Param(key, "integer", v, lo, hi) without its __init__ call
+        p.name = key
+        p.kind = "integer"
+        p.value = v
+        p.lo = lo
+        p.hi = hi
+        p.options = ()
+        self.record[key] = p
         return v
 
     def choice(self, name: str, options, fixed=None):
@@ -283,11 +291,15 @@ class ParamRecorder:
         ``options`` is a dict {option: weight} or a sequence (equal weights). Options
         may be strings or functions (part templates); an override names the option.
         """
+        return self._pick(name, options, fixed)[0]
+
+    def _pick(self, name: str, options, fixed=None) -> tuple:
+        """:meth:`choice` and the recorded name of the chosen option."""
         key = self._dot + name
         opts, w, names, total = _options(options)
         if fixed is not None:
             self.record[key] = Param(key, "fixed", option_name(fixed))
-            return fixed
+            return fixed, option_name(fixed)
         buf = self._buf
         u = (buf.pop() if buf else self._draws.refill()) * total
         i = 0
@@ -300,8 +312,14 @@ class ParamRecorder:
             o = self.overrides.get(key)
             if o is not None and option_name(o) in names:
                 i = names.index(option_name(o))
-        self.record[key] = Param(key, "choice", names[i], None, None, names)
-        return opts[i]
+        p = _new(Param)  # Param(key, "choice", names[i], None, None, names) without __init__
+        p.name = key
+        p.kind = "choice"
+        p.value = chosen = names[i]
+        p.lo = p.hi = None
+        p.options = names
+        self.record[key] = p
+        return opts[i], chosen
 
     def flag(self, name: str, p: float, fixed: bool | None = None) -> bool:
         """True with probability ``p``."""
@@ -315,5 +333,12 @@ class ParamRecorder:
             o = self.overrides.get(key)
             if o is not None:
                 v = bool(o)
-        self.record[key] = Param(key, "flag", bool(v), None, None, (False, True))
-        return bool(v)
+        v = bool(v)
+        p = _new(Param)  # Param(key, "flag", v, None, None, (False, True)) without __init__
+        p.name = key
+        p.kind = "flag"
+        p.value = v
+        p.lo = p.hi = None
+        p.options = _FLAG_OPTIONS
+        self.record[key] = p
+        return v
