@@ -150,6 +150,14 @@ class _Family:
     area = property(lambda self: self._array(2))
 
 
+def _draw():
+    """:mod:`artipg.annotate.draw`, imported on first use (it loads numba)."""
+    d = sys.modules.get("artipg.annotate.draw")
+    if d is None:
+        import artipg.annotate.draw as d
+    return d
+
+
 def _kernels():
     """:mod:`artipg.geometry.kernels`, imported on first use (it loads numba); a
     function-level ``from ... import`` costs more than the small kernels it calls."""
@@ -555,19 +563,22 @@ def sample_points(obj, n: int = 2048, seed: int = 0, qpos=None, parts=None) -> P
     parts : sequence of int, optional
         Sample only the surfaces of these parts (instance ids), area-uniformly.
     """
-    from artipg.annotate.draw import draw_kernel  # numba: loaded with the first draw
-
+    draw = _draw()
     table = obj.primitive_table
     weight = table.cell_areas if parts is None else table.part_cell_p(parts)
     if not len(weight):
         raise ValueError("the object has no surface to sample")
     code, Q = table.cell_rows
-    with streams(seed) as st:
-        U = st.open(SAMPLING_STREAM).random((3, n))
     out = np.empty((2, n, 3))
     labels = np.empty((4, n), dtype=np.int64)
-    draw_kernel(U, weight, code, Q, table.world_all(obj.link_poses(qpos)), table.cell_prim, table.prim_part,
-                table.prim_link, table.part_semantic, out, labels)
+    args = (weight, code, Q, table.world_all(obj.link_poses(qpos)), table.cell_prim, table.prim_part,
+            table.prim_link, table.part_semantic, out, labels)
+    if draw.PCG64_MATCHES:  # the uniforms drawn in the kernel: the same doubles
+        draw.draw_stream(draw.stream_words(seed, SAMPLING_STREAM), *args)
+    else:
+        with streams(seed) as st:
+            U = st.open(SAMPLING_STREAM).random((3, n))
+        draw.draw_kernel(U, *args)
     prim, part, semantic, link = labels
     links = obj.links
     return PointCloud(
