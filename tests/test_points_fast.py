@@ -719,6 +719,50 @@ def test_sample_points_is_the_same_with_numpys_uniforms(monkeypatch):
         assert (a == b) if isinstance(a, tuple) else same(a, b)
 
 
+@pytest.mark.parametrize("category", CATS)
+def test_sample_points_with_the_cells_made_in_the_draw_or_kept(category):
+    """A fresh object's draw makes its cells in the kernel (draw_table, not kept); once
+    the table holds them, the draw reads them (draw_stream): the same clouds, and those
+    of draw_kernel on numpy's uniforms."""
+    from artipg.annotate.draw import draw_kernel
+
+    fields = ("points", "normals", "semantic", "instance", "link", "primitive")
+    for seed in range(2):
+        for qpos in (None, "open"):
+            fresh, kept = artipg.generate(category, seed), artipg.generate(category, seed)
+            q = None if qpos is None else fresh.limits()[:, 1]
+            a = sample_points(fresh, 777, seed=seed + 5, qpos=q)
+            assert "_cells" not in fresh.primitive_table.__dict__
+            t = kept.primitive_table
+            code, Q = t.cell_rows
+            b = sample_points(kept, 777, seed=seed + 5, qpos=q)
+            with streams(seed + 5) as st:
+                U = st.open(SAMPLING_STREAM).random((3, 777))
+            want = (np.empty((2, 777, 3)), np.empty((4, 777), dtype=np.int64))
+            draw_kernel(U, t.cell_areas, code, Q, t.world_all(kept.link_poses(q)), t.cell_prim, t.prim_part,
+                        t.prim_link, t.part_semantic, *want)
+            for f in fields:
+                assert same(getattr(a, f), getattr(b, f)), (category, seed, f)
+            assert same(a.points, want[0][0]) and same(a.normals, want[0][1])
+            assert same(np.stack([a.primitive, a.instance, a.semantic, a.link]), want[1])
+            assert (a.instance_names, a.link_names) == (b.instance_names, b.link_names)
+
+
+def test_sample_points_refuses_an_object_without_surface():
+    from artipg.geometry import cuboid_between
+    from artipg.model.builder import ObjectBuilder
+    from artipg.model.part import Part
+
+    b = ObjectBuilder()
+    b.create_link("base").add(Part("body", "box", [cuboid_between((0.0, 0.0, 0.0), (0.0, 0.0, 0.0))]))
+    for cached in (False, True):
+        obj = b.build("test", "a", 0, normalize=False)
+        if cached:
+            obj.primitive_table._cells
+        with pytest.raises(ValueError, match="no surface"):
+            sample_points(obj, 10)
+
+
 # ---------------------------------------------------------------- the torus's tube angles
 
 def _tube_cases(rng, n=4000):

@@ -27,14 +27,15 @@ from numba.extending import intrinsic
 
 from artipg.annotate import points
 from artipg.annotate.points import FAMILY_CODE
-from artipg.geometry import patches
+from artipg.geometry import kernels, patches
+from artipg.geometry.kernels import cell_arrays
 from artipg.geometry.patches import TUBE_MAX_STEPS, TUBE_TOL
 from artipg.kernel_cache import drop_stale_caches
 from artipg.rules import streams
 from artipg.rules.streams import PCG64_MULTIPLIER, stream_state
 
-# FAMILY_CODE, TUBE_* and the multiplier are compiled in
-drop_stale_caches(__file__, [points.__file__, patches.__file__, streams.__file__])
+# FAMILY_CODE, TUBE_*, the multiplier and the cells kernel are compiled in
+drop_stale_caches(__file__, [points.__file__, patches.__file__, streams.__file__, kernels.__file__])
 
 if list(FAMILY_CODE) != ["rect", "tri", "sector", "band", "zone", "torus"]:
     raise RuntimeError("draw_kernel hard-codes the family codes: update it with FAMILIES")
@@ -242,6 +243,20 @@ def draw_stream(words, weight, code, Q, W, cell_prim, prim_part, prim_link, part
         As for :func:`draw_kernel`.
     """
     _draw(_NO_U, words, weight, code, Q, W, cell_prim, prim_part, prim_link, part_semantic, out, labels)
+
+
+@numba.njit(cache=True, nogil=True, error_model="numpy")
+def draw_table(flat, foff, start, prim, code, cos_f, sin_f, W, prim_part, prim_link, part_semantic, words, out,
+               labels):  # pragma: no cover - compiled
+    """:func:`draw_stream` of an object's cells weighted by their areas, the cells made
+    here (:func:`artipg.geometry.kernels.cell_arrays` of the first seven arguments,
+    ``PrimitiveTable._packed``) and dropped. Returns the number of cells; with none,
+    nothing is drawn."""
+    cell_code, Q, area, cell_prim, _, _ = cell_arrays(flat, foff, start, prim, code, cos_f, sin_f)
+    K = area.shape[0]
+    if K:
+        _draw(_NO_U, words, area, cell_code, Q, W, cell_prim, prim_part, prim_link, part_semantic, out, labels)
+    return K
 
 
 @numba.njit(cache=True, nogil=True, error_model="numpy")

@@ -317,15 +317,8 @@ class PrimitiveTable:
         packed = self._packed
         if packed is None:
             return self._cells_of(self._plain_families())
-        k = _kernels()
-        start, rows = self._start, k.ROW_CELLS
-        R = sum([rows[c] * (start[g + 1] - start[g]) for g, c in enumerate(_kernel_info(self._geoms)[1])])
-        Q = np.zeros((R, k.Q_WIDTH))
-        area, cdf = np.empty(R), np.empty(R)
-        ints = np.empty((2, R), dtype=np.int64)
-        counts = np.empty(6, dtype=np.int64)
-        K = k.cells(*packed, Q, area, ints[0], ints[1], cdf, counts)
-        return ints[1, :K], Q[:K], area[:K], ints[0, :K], cdf[:K], counts.tolist()
+        *arrays, counts = _kernels().cell_arrays(*packed)
+        return (*arrays, counts.tolist())
 
     @staticmethod
     def _cells_of(fams: list) -> tuple:
@@ -565,20 +558,28 @@ def sample_points(obj, n: int = 2048, seed: int = 0, qpos=None, parts=None) -> P
     """
     draw = _draw()
     table = obj.primitive_table
-    weight = table.cell_areas if parts is None else table.part_cell_p(parts)
-    if not len(weight):
-        raise ValueError("the object has no surface to sample")
-    code, Q = table.cell_rows
     out = np.empty((2, n, 3))
     labels = np.empty((4, n), dtype=np.int64)
-    args = (weight, code, Q, table.world_all(obj.link_poses(qpos)), table.cell_prim, table.prim_part,
-            table.prim_link, table.part_semantic, out, labels)
-    if draw.PCG64_MATCHES:  # the uniforms drawn in the kernel: the same doubles
-        draw.draw_stream(draw.stream_words(seed, SAMPLING_STREAM), *args)
+    if parts is None and draw.PCG64_MATCHES and "_cells" not in table.__dict__ and table._packed is not None:
+        # the cells made in the draw and not kept: boxing them for the table costs more
+        # than making them again when they are asked for
+        if not draw.draw_table(*table._packed, table.world_all(obj.link_poses(qpos)), table.prim_part,
+                               table.prim_link, table.part_semantic, draw.stream_words(seed, SAMPLING_STREAM),
+                               out, labels):
+            raise ValueError("the object has no surface to sample")
     else:
-        with streams(seed) as st:
-            U = st.open(SAMPLING_STREAM).random((3, n))
-        draw.draw_kernel(U, *args)
+        weight = table.cell_areas if parts is None else table.part_cell_p(parts)
+        if not len(weight):
+            raise ValueError("the object has no surface to sample")
+        code, Q = table.cell_rows
+        args = (weight, code, Q, table.world_all(obj.link_poses(qpos)), table.cell_prim, table.prim_part,
+                table.prim_link, table.part_semantic, out, labels)
+        if draw.PCG64_MATCHES:  # the uniforms drawn in the kernel: the same doubles
+            draw.draw_stream(draw.stream_words(seed, SAMPLING_STREAM), *args)
+        else:
+            with streams(seed) as st:
+                U = st.open(SAMPLING_STREAM).random((3, n))
+            draw.draw_kernel(U, *args)
     prim, part, semantic, link = labels
     links = obj.links
     return PointCloud(
