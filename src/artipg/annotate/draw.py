@@ -171,10 +171,22 @@ def pcg_fill(words, out):  # pragma: no cover - compiled
 
 
 def stream_words(seed: int, key: int) -> np.ndarray:
-    """PCG64 state and increment (4,) uint64 (state low, high, increment low, high) at
-    the start of stream ``key`` of seed ``seed`` (:func:`artipg.rules.streams.stream_state`)."""
-    state, inc = stream_state(seed, key)
-    return np.frombuffer((state | inc << 128).to_bytes(32, "little"), dtype=np.uint64)
+    """PCG64 state and increment (4,) uint64, read-only (state low, high, increment low,
+    high) at the start of stream ``key`` of seed ``seed``
+    (:func:`artipg.rules.streams.stream_state`)."""
+    hit = _RECENT_WORDS.get((seed, key))
+    if hit is None:
+        state, inc = stream_state(seed, key)
+        hit = np.frombuffer((state | inc << 128).to_bytes(32, "little"), dtype=np.uint64)
+        if len(_RECENT_WORDS) >= 16:
+            _RECENT_WORDS.clear()
+        _RECENT_WORDS[(seed, key)] = hit
+    return hit
+
+
+# The words of the last few (sampling seed, stream): the same sampling seed (the default
+# 0) is the usual one for every object.
+_RECENT_WORDS: dict[tuple, np.ndarray] = {}
 
 
 def _pcg_matches_numpy() -> bool:

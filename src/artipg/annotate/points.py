@@ -580,19 +580,10 @@ def sample_points(obj, n: int = 2048, seed: int = 0, qpos=None, parts=None) -> P
             with streams(seed) as st:
                 U = st.open(SAMPLING_STREAM).random((3, n))
             draw.draw_kernel(U, *args)
-    prim, part, semantic, link = labels
     links = obj.links
-    return PointCloud(
-        points=out[0],
-        normals=out[1],
-        semantic=semantic,
-        instance=part,
-        link=link,
-        primitive=prim,
-        semantic_names=SEMANTIC_LABELS,
-        instance_names=tuple([p.name for lk in links for p in lk.parts]),
-        link_names=tuple([lk.name for lk in links]),
-    )
+    # positional: points, normals, semantic, instance, link, primitive and the names
+    return PointCloud(out[0], out[1], labels[2], labels[1], labels[3], labels[0], SEMANTIC_LABELS,
+                      tuple([p.name for lk in links for p in lk.parts]), tuple([lk.name for lk in links]))
 
 
 def draw_plain(U, weight, code, Q, W, cell_prim, prim_part, prim_link, part_semantic, out, labels) -> None:
