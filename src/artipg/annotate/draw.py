@@ -1,14 +1,21 @@
 """The compiled point draw: patch cells and uniform numbers in, labelled points out.
 
-:func:`artipg.annotate.points.sample_points` draws three uniforms per point with numpy
-and hands them to :func:`draw_kernel`, which picks each point's patch cell by the
-inverse CDF of the cell areas, places the point with its family's closed-form sampler
-(:func:`artipg.geometry.patches.place_family`), applies the primitive's pose and
+:func:`draw_kernel` takes three uniforms per point, picks each point's patch cell by
+the inverse CDF of the cell areas, places the point with its family's closed-form
+sampler (:func:`artipg.geometry.patches.place_family`), applies the primitive's pose and
 gathers its labels, one point at a time (the cells of the planar families are posed
 once, and their points placed in the object frame directly). Its arithmetic is that of
 the numpy definition (:func:`artipg.annotate.points.draw_plain`), operation for
 operation and in the same order, so the points are the same to the bit
 (``tests/test_points_fast.py`` compares them).
+
+:func:`artipg.annotate.points.sample_points` calls :func:`draw_stream` (or, for a fresh
+object, :func:`draw_table`, which also makes the cells): the same draw, whose uniforms
+are those of numpy's ``Generator(PCG64).random((3, n))`` on the sampling stream, drawn
+in the loop by the same integer arithmetic as numpy's PCG64 (:func:`pcg64_next`); the
+three rows of U are three stretches of the generator, stepped side by side.
+:data:`PCG64_MATCHES` checks the doubles against numpy's when the module is imported;
+were they to differ, ``sample_points`` draws them with numpy and calls :func:`draw_kernel`.
 
 This module imports numba; import it only where points are drawn (``import artipg``
 and generation stay light).

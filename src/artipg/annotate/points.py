@@ -542,7 +542,8 @@ def sample_points(obj, n: int = 2048, seed: int = 0, qpos=None, parts=None) -> P
     The points are independent: each picks a patch cell with probability proportional
     to its area (so points per primitive are multinomial in area, in random order) and
     is placed exactly area-uniformly on it, from three uniforms per point (one draw of
-    ``3 n``; see :func:`draw_plain`).
+    ``3 n`` on the sampling stream of ``seed``, made in the compiled draw; see
+    :func:`draw_plain` and :mod:`artipg.annotate.draw`).
 
     Parameters
     ----------
