@@ -641,6 +641,128 @@ def test_draw_kernel_matches_its_numpy_definition_on_every_family():
         assert same(pts, wpts) and same(lab, wlab)
 
 
+# ---------------------------------------------------------------- the uniforms drawn in the kernel
+
+def _numpy_doubles(words, n):
+    lo, hi, inc_lo, inc_hi = (int(w) for w in words)
+    bitgen = np.random.PCG64(0)
+    bitgen.state = {"bit_generator": "PCG64", "state": {"state": hi << 64 | lo, "inc": inc_hi << 64 | inc_lo},
+                    "has_uint32": 0, "uinteger": 0}
+    return bitgen, np.random.Generator(bitgen).random(n)
+
+
+def test_compiled_pcg64_draws_numpys_doubles_and_jumps():
+    from artipg.annotate.draw import PCG64_MATCHES, pcg64_advance, pcg_fill, stream_words
+
+    assert PCG64_MATCHES
+    rng = np.random.default_rng(15)
+    top = np.uint64(2 ** 64 - 1)
+    cases = [stream_words(s, SAMPLING_STREAM) for s in (0, 1, 2 ** 70 + 3)]
+    cases += [np.array([0, 0, 1, 0], dtype=np.uint64), np.array([top, top, top, top], dtype=np.uint64)]
+    cases += [rng.integers(0, 2 ** 64, 4, dtype=np.uint64) | np.array([0, 0, 1, 0], dtype=np.uint64) for _ in range(6)]
+    for words in cases:
+        bitgen, want = _numpy_doubles(words, 5000)
+        got = np.empty(5000)
+        pcg_fill(words, got)
+        assert same(got, want)
+        state = int(words[1]) << 64 | int(words[0])
+        for n in (0, 1, 2, 2047, 2048, 6144, 2 ** 40 + 5, 2 ** 62 + 2 ** 61 + 9):
+            bitgen.state = {"bit_generator": "PCG64", "state": {"state": state, "inc": bitgen.state["state"]["inc"]},
+                            "has_uint32": 0, "uinteger": 0}
+            bitgen.advance(n)
+            lo, hi = pcg64_advance(words[0], words[1], words[2], words[3], n)
+            assert int(hi) << 64 | int(lo) == bitgen.state["state"]["state"], n
+
+
+def test_stream_words_are_the_sampling_streams_state():
+    from artipg.annotate.draw import pcg_fill, stream_words
+
+    for seed in (0, 5, 123456789, 2 ** 100 + 7):
+        words = stream_words(seed, SAMPLING_STREAM)
+        with streams(seed) as st:
+            want = st.open(SAMPLING_STREAM).random(999)
+        got = np.empty(999)
+        pcg_fill(words, got)
+        assert same(got, want)
+
+
+@pytest.mark.parametrize("category", CATS)
+def test_draw_stream_is_draw_kernel_of_numpys_uniforms(category):
+    from artipg.annotate.draw import draw_kernel, draw_stream, stream_words
+
+    for seed in range(2):
+        obj = artipg.generate(category, seed)
+        t = obj.primitive_table
+        code, Q = t.cell_rows
+        for qpos, parts, n in ((None, None, 2048), (obj.limits()[:, 1], None, 999), (None, [0], 1), (None, None, 0)):
+            weight = t.cell_areas if parts is None else t.part_cell_p(parts)
+            with streams(seed + 3) as st:
+                U = st.open(SAMPLING_STREAM).random((3, n))
+            args = (weight, code, Q, t.world_all(obj.link_poses(qpos)), t.cell_prim, t.prim_part, t.prim_link,
+                    t.part_semantic)
+            got = (np.full((2, n, 3), np.nan), np.full((4, n), -7, dtype=np.int64))
+            want = (np.full((2, n, 3), np.nan), np.full((4, n), -7, dtype=np.int64))
+            draw_stream(stream_words(seed + 3, SAMPLING_STREAM), *args, *got)
+            draw_kernel(U, *args, *want)
+            assert same(got[0], want[0]) and same(got[1], want[1]), (category, seed, n)
+
+
+def test_sample_points_is_the_same_with_numpys_uniforms(monkeypatch):
+    from artipg.annotate import draw
+
+    obj = artipg.generate("oven", 4)
+    fields = ("points", "normals", "semantic", "instance", "link", "primitive", "instance_names", "link_names")
+    fast = [getattr(sample_points(obj, 700, seed=9, parts=[0]), f) for f in fields]
+    monkeypatch.setattr(draw, "PCG64_MATCHES", False)
+    plain = [getattr(sample_points(obj, 700, seed=9, parts=[0]), f) for f in fields]
+    for a, b in zip(fast, plain):
+        assert (a == b) if isinstance(a, tuple) else same(a, b)
+
+
+@pytest.mark.parametrize("category", CATS)
+def test_sample_points_with_the_cells_made_in_the_draw_or_kept(category):
+    """A fresh object's draw makes its cells in the kernel (draw_table, not kept); once
+    the table holds them, the draw reads them (draw_stream): the same clouds, and those
+    of draw_kernel on numpy's uniforms."""
+    from artipg.annotate.draw import draw_kernel
+
+    fields = ("points", "normals", "semantic", "instance", "link", "primitive")
+    for seed in range(2):
+        for qpos in (None, "open"):
+            fresh, kept = artipg.generate(category, seed), artipg.generate(category, seed)
+            q = None if qpos is None else fresh.limits()[:, 1]
+            a = sample_points(fresh, 777, seed=seed + 5, qpos=q)
+            assert "_cells" not in fresh.primitive_table.__dict__
+            t = kept.primitive_table
+            code, Q = t.cell_rows
+            b = sample_points(kept, 777, seed=seed + 5, qpos=q)
+            with streams(seed + 5) as st:
+                U = st.open(SAMPLING_STREAM).random((3, 777))
+            want = (np.empty((2, 777, 3)), np.empty((4, 777), dtype=np.int64))
+            draw_kernel(U, t.cell_areas, code, Q, t.world_all(kept.link_poses(q)), t.cell_prim, t.prim_part,
+                        t.prim_link, t.part_semantic, *want)
+            for f in fields:
+                assert same(getattr(a, f), getattr(b, f)), (category, seed, f)
+            assert same(a.points, want[0][0]) and same(a.normals, want[0][1])
+            assert same(np.stack([a.primitive, a.instance, a.semantic, a.link]), want[1])
+            assert (a.instance_names, a.link_names) == (b.instance_names, b.link_names)
+
+
+def test_sample_points_refuses_an_object_without_surface():
+    from artipg.geometry import cuboid_between
+    from artipg.model.builder import ObjectBuilder
+    from artipg.model.part import Part
+
+    b = ObjectBuilder()
+    b.create_link("base").add(Part("body", "box", [cuboid_between((0.0, 0.0, 0.0), (0.0, 0.0, 0.0))]))
+    for cached in (False, True):
+        obj = b.build("test", "a", 0, normalize=False)
+        if cached:
+            obj.primitive_table._cells
+        with pytest.raises(ValueError, match="no surface"):
+            sample_points(obj, 10)
+
+
 # ---------------------------------------------------------------- the torus's tube angles
 
 def _tube_cases(rng, n=4000):

@@ -150,6 +150,14 @@ class _Family:
     area = property(lambda self: self._array(2))
 
 
+def _draw():
+    """:mod:`artipg.annotate.draw`, imported on first use (it loads numba)."""
+    d = sys.modules.get("artipg.annotate.draw")
+    if d is None:
+        import artipg.annotate.draw as d
+    return d
+
+
 def _kernels():
     """:mod:`artipg.geometry.kernels`, imported on first use (it loads numba); a
     function-level ``from ... import`` costs more than the small kernels it calls."""
@@ -309,15 +317,8 @@ class PrimitiveTable:
         packed = self._packed
         if packed is None:
             return self._cells_of(self._plain_families())
-        k = _kernels()
-        start, rows = self._start, k.ROW_CELLS
-        R = sum([rows[c] * (start[g + 1] - start[g]) for g, c in enumerate(_kernel_info(self._geoms)[1])])
-        Q = np.zeros((R, k.Q_WIDTH))
-        area, cdf = np.empty(R), np.empty(R)
-        ints = np.empty((2, R), dtype=np.int64)
-        counts = np.empty(6, dtype=np.int64)
-        K = k.cells(*packed, Q, area, ints[0], ints[1], cdf, counts)
-        return ints[1, :K], Q[:K], area[:K], ints[0, :K], cdf[:K], counts.tolist()
+        *arrays, counts = _kernels().cell_arrays(*packed)
+        return (*arrays, counts.tolist())
 
     @staticmethod
     def _cells_of(fams: list) -> tuple:
@@ -541,7 +542,8 @@ def sample_points(obj, n: int = 2048, seed: int = 0, qpos=None, parts=None) -> P
     The points are independent: each picks a patch cell with probability proportional
     to its area (so points per primitive are multinomial in area, in random order) and
     is placed exactly area-uniformly on it, from three uniforms per point (one draw of
-    ``3 n``; see :func:`draw_plain`).
+    ``3 n`` on the sampling stream of ``seed``, made in the compiled draw; see
+    :func:`draw_plain` and :mod:`artipg.annotate.draw`).
 
     Parameters
     ----------
@@ -555,32 +557,34 @@ def sample_points(obj, n: int = 2048, seed: int = 0, qpos=None, parts=None) -> P
     parts : sequence of int, optional
         Sample only the surfaces of these parts (instance ids), area-uniformly.
     """
-    from artipg.annotate.draw import draw_kernel  # numba: loaded with the first draw
-
+    draw = _draw()
     table = obj.primitive_table
-    weight = table.cell_areas if parts is None else table.part_cell_p(parts)
-    if not len(weight):
-        raise ValueError("the object has no surface to sample")
-    code, Q = table.cell_rows
-    with streams(seed) as st:
-        U = st.open(SAMPLING_STREAM).random((3, n))
     out = np.empty((2, n, 3))
     labels = np.empty((4, n), dtype=np.int64)
-    draw_kernel(U, weight, code, Q, table.world_all(obj.link_poses(qpos)), table.cell_prim, table.prim_part,
+    if parts is None and draw.PCG64_MATCHES and "_cells" not in table.__dict__ and table._packed is not None:
+        # the cells made in the draw and not kept: boxing them for the table costs more
+        # than making them again when they are asked for
+        if not draw.draw_table(*table._packed, table.world_all(obj.link_poses(qpos)), table.prim_part,
+                               table.prim_link, table.part_semantic, draw.stream_words(seed, SAMPLING_STREAM),
+                               out, labels):
+            raise ValueError("the object has no surface to sample")
+    else:
+        weight = table.cell_areas if parts is None else table.part_cell_p(parts)
+        if not len(weight):
+            raise ValueError("the object has no surface to sample")
+        code, Q = table.cell_rows
+        args = (weight, code, Q, table.world_all(obj.link_poses(qpos)), table.cell_prim, table.prim_part,
                 table.prim_link, table.part_semantic, out, labels)
-    prim, part, semantic, link = labels
+        if draw.PCG64_MATCHES:  # the uniforms drawn in the kernel: the same doubles
+            draw.draw_stream(draw.stream_words(seed, SAMPLING_STREAM), *args)
+        else:
+            with streams(seed) as st:
+                U = st.open(SAMPLING_STREAM).random((3, n))
+            draw.draw_kernel(U, *args)
     links = obj.links
-    return PointCloud(
-        points=out[0],
-        normals=out[1],
-        semantic=semantic,
-        instance=part,
-        link=link,
-        primitive=prim,
-        semantic_names=SEMANTIC_LABELS,
-        instance_names=tuple([p.name for lk in links for p in lk.parts]),
-        link_names=tuple([lk.name for lk in links]),
-    )
+    # positional: points, normals, semantic, instance, link, primitive and the names
+    return PointCloud(out[0], out[1], labels[2], labels[1], labels[3], labels[0], SEMANTIC_LABELS,
+                      tuple([p.name for lk in links for p in lk.parts]), tuple([lk.name for lk in links]))
 
 
 def draw_plain(U, weight, code, Q, W, cell_prim, prim_part, prim_link, part_semantic, out, labels) -> None:

@@ -550,6 +550,22 @@ def cells(flat, foff, start, prim, code, cos_f, sin_f, Q, area, cell_prim, cell_
     return o
 
 
+@numba.njit(cache=True)
+def cell_arrays(flat, foff, start, prim, code, cos_f, sin_f):
+    """:func:`cells` into arrays made here, cut to the K cells: (family code (K,),
+    parameter rows (K, Q_WIDTH), areas (K,), primitives (K,), running area sums (K,),
+    cells per family (6,)); the arguments are :func:`cells`'s first seven."""
+    R = 0
+    for g in range(len(code)):
+        R += _CELLS[code[g]].sum() * (start[g + 1] - start[g])
+    Q = np.zeros((R, Q_WIDTH))
+    area, cdf = np.empty(R), np.empty(R)
+    ints = np.empty((2, R), dtype=np.int64)
+    counts = np.empty(6, dtype=np.int64)
+    K = cells(flat, foff, start, prim, code, cos_f, sin_f, Q, area, ints[0], ints[1], cdf, counts)
+    return ints[1, :K], Q[:K], area[:K], ints[0, :K], cdf[:K], counts
+
+
 # ---------------------------------------------------------------- local boxes
 
 @numba.njit(cache=True)

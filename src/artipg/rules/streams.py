@@ -108,6 +108,20 @@ def _stream_jump(key: int) -> tuple[int, int]:
     return hit
 
 
+def stream_state(seed: int, key: int) -> tuple[int, int]:
+    """(state, odd increment), 128-bit ints, of numpy's PCG64 at the start of stream
+    ``key`` of object ``seed``: what :meth:`Streams.open` sets."""
+    state, inc = _pcg_words(int(seed))
+    if key:
+        a, b = _stream_jump(key)
+        state = (state * a + inc * b) & _MASK128
+    return state, inc
+
+
+#: numpy's PCG64 multiplier (``PCG_DEFAULT_MULTIPLIER_128``).
+PCG64_MULTIPLIER = _MULT
+
+
 def state_view(bitgen: np.random.PCG64):
     """Writable views ``(words, flags)`` of a PCG64's C state, or None.
 
