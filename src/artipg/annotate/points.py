@@ -521,9 +521,14 @@ class PrimitiveTable:
         d = self.__dict__
         if "_local_centre_half" not in d and "local_boxes" not in d:
             self._compiled_local_boxes()  # sets both, without the cached_property machinery
-        c, h = self._local_centre_half
-        R = W[:, :3, :3]
-        _kernels().box_union(R @ c[:, :, None], np.abs(R) @ h[:, :, None], W, out)
+        ch = self._local_centre_half
+        # R c and |R| h as one stacked product: each (3, 3) @ (3, 1) item is the same BLAS
+        # call as in two products, one numpy call fewer
+        R = np.empty((2, self.n_prims, 3, 3))
+        R[0] = W[:, :, :3]
+        np.abs(R[0], out=R[1])
+        Rc, Rh = R @ ch[:, :, :, None]
+        _kernels().box_union(Rc, Rh, W, out)
         return out
 
     @cached_property
