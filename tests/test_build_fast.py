@@ -73,6 +73,8 @@ def test_first_bounds_caches_what_the_properties_give(category):
     """obj.bounds() first (the build's order) caches the table, its packed arrays, local
     boxes and centres and the link levels; reading the cached properties first gives the
     same values."""
+    import artipg.geometry.kernels  # noqa: F401  (numba loaded: the compiled path)
+
     for seed in range(2):
         obj = artipg.generate(category, seed)
         fresh = copy.copy(obj)

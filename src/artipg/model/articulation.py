@@ -167,7 +167,9 @@ class ArticulatedObject:
         parents = [lk.joint.parent for lk in links[1:]]
         if parents.count(links[0].name) == n:  # every link on the root: one level
             return [(slice(1, n + 1), 0, slice(0, n), range(1, n + 1))] if n else []
-        idx = self.link_index
+        idx = self.__dict__.get("link_index")
+        if idx is None:  # link_index, cached without cached_property's lock
+            idx = self.__dict__["link_index"] = {link.name: i for i, link in enumerate(links)}
         # the links of each depth, in link order, with their parents
         by_depth: list[list[int]] = []
         depth = [0] * (n + 1)
