@@ -202,6 +202,8 @@ class PrimitiveTable:
         Global primitive index of every row, groups one after the other.
     prim_T, prim_link, prim_part, part_semantic
         The attributes below.
+    offsets : ((G + 1,) int64, (G + 1,) int64), optional
+        ``foff`` and ``start`` as arrays (made from the lists when not given).
 
     Attributes
     ----------
@@ -216,12 +218,15 @@ class PrimitiveTable:
     """
 
     def __init__(self, geoms: list[type], flat: np.ndarray, start: list[int], foff: list[int], order: np.ndarray,
-                 prim_T: np.ndarray, prim_link: np.ndarray, prim_part: np.ndarray, part_semantic: np.ndarray):
+                 prim_T: np.ndarray, prim_link: np.ndarray, prim_part: np.ndarray, part_semantic: np.ndarray,
+                 offsets: tuple | None = None):
         self._geoms = tuple(geoms)
         self._flat = flat
         self._start = start
         self._foff = foff
         self._order = order
+        # foff and start as int64 arrays (the kernels' arguments), when the caller has them
+        self._offsets = offsets
         self.n_prims = len(prim_T)
         self.prim_T = prim_T
         self.prim_link = prim_link
@@ -238,41 +243,37 @@ class PrimitiveTable:
     @classmethod
     def of(cls, obj) -> "PrimitiveTable":
         """The table of ``obj``'s primitives (parts in link order, primitives in part order)."""
-        prims, counts, part_poses, part_link, sem = [], [], [], [], []
+        prims, part_poses, sem, prim_link, prim_part = [], [], [], [], []
+        pi = 0
         for li, link in enumerate(obj.links):
             for part in link.parts:
+                ps = part.primitives
+                k = len(ps)
                 part_poses.append(part.pose)
-                part_link.append(li)
                 sem.append(label_id(part.semantic))
-                counts.append(len(part.primitives))
-                prims += part.primitives
-        prim_part = np.arange(len(counts)).repeat(counts)
-        prim_link = np.array(part_link, dtype=np.int64).repeat(counts)
-        sem = np.array(sem, dtype=np.int64)
-        n_root = sum(counts[:len(obj.links[0].parts)]) if obj.links else 0
-        if not prims:
-            return cls([], np.zeros(0), [0], [0], np.zeros(0, dtype=np.int64), np.zeros((0, 4, 4)), prim_link,
-                       prim_part, sem)
-        geoms, params, poses = list(zip(*prims))[:3]
-        # concatenating (4, 4) arrays is about twice as fast as np.array on a list of them
-        prim_T = (np.concatenate(part_poses).reshape(-1, 4, 4)[prim_part]
-                  @ np.concatenate(poses).reshape(-1, 4, 4))
-        # rows of each geometry template, templates in order of first appearance
-        first: dict = {}
-        gid = [first.setdefault(g, len(first)) for g in geoms]
+                prim_link += [li] * k
+                prim_part += [pi] * k
+                pi += 1
+                prims += ps
         N = len(prims)
+        if not prims:
+            sem = np.array(sem, dtype=np.int64)
+            none = np.zeros(0, dtype=np.int64)
+            return cls([], np.zeros(0), [0], [0], none, np.zeros((0, 4, 4)), none, none, sem)
+        geoms, params, poses = list(zip(*prims))[:3]
+        # rows of each geometry template, templates in order of first appearance
+        first = dict.fromkeys(geoms)
         if len(first) == 1:
-            start, order = [0, N], np.arange(N)
+            start, idx = [0, N], range(N)
             rows = params
         else:
             by_group: list[list[int]] = [[] for _ in first]
-            for i, j in enumerate(gid):
+            for i, j in enumerate(map(dict(zip(first, range(len(first)))).__getitem__, geoms)):
                 by_group[j].append(i)
             start = [0]
             for r in by_group:
                 start.append(start[-1] + len(r))
             idx = [i for r in by_group for i in r]
-            order = np.array(idx, dtype=np.int64)
             rows = [params[i] for i in idx]
         # every row of a group has its template's parameter count (numpy would refuse ragged rows)
         foff = [0]
@@ -282,8 +283,19 @@ class PrimitiveTable:
         if sum(map(len, rows)) != foff[-1]:
             raise ValueError("primitives of one geometry template have different parameter counts")
         flat = np.fromiter(chain.from_iterable(rows), float, foff[-1])
-        table = cls(list(first), flat, start, foff, order, prim_T, prim_link, prim_part, sem)
-        table._n_root = n_root
+        # the index arrays are slices of one int64 array (one conversion instead of six):
+        # link, part, row order (N each), semantic ids (P), foff and start (G + 1 each)
+        P, G1 = len(sem), len(foff)
+        ints = np.fromiter(chain(prim_link, prim_part, idx, sem, foff, start), np.int64, 3 * N + P + 2 * G1)
+        prim_part = ints[N:2 * N]
+        # the part poses then the primitive poses in one concatenation (concatenating
+        # (4, 4) arrays is about twice as fast as np.array on a list of them)
+        X = np.concatenate(part_poses + list(poses)).reshape(-1, 4, 4)
+        prim_T = X[prim_part] @ X[P:]
+        e = 3 * N + P
+        table = cls(list(first), flat, start, foff, ints[2 * N:3 * N], prim_T, ints[:N], prim_part, ints[3 * N:e],
+                    (ints[e:e + G1], ints[e + G1:]))
+        table._n_root = prim_link.count(0)
         return table
 
     # ------------------------------------------------------------ patches
@@ -294,6 +306,10 @@ class PrimitiveTable:
         (G + 1,), global primitive index of each row (N,), template codes (G,), numpy's
         cos and sin of the packed parameters (F,)); None when a template has no
         compiled twin."""
+        return self._pack()
+
+    def _pack(self) -> tuple | None:
+        """:attr:`_packed`, computed."""
         info = _kernel_info(self._geoms)
         if info is None:
             return None
@@ -301,13 +317,20 @@ class PrimitiveTable:
         flat = self._flat
         # the arcs of rings and tori are the only parameters whose cos and sin are read
         trig = (np.cos(flat), np.sin(flat)) if arcs else (flat, flat)
-        return (flat, np.array(self._foff), np.array(self._start), self._order, code) + trig
+        foff, start = self._offsets or (np.array(self._foff), np.array(self._start))
+        return (flat, foff, start, self._order, code) + trig
 
     def _compiled_boxes(self) -> bool:
         """Whether local boxes and bounds take the compiled path: once numba is loaded
         (by the patch families, the point draw or the checks), so that a process that
         only generates objects never waits for numba's start (the results are the same)."""
-        return "numba" in sys.modules and self._packed is not None
+        if "numba" not in sys.modules:
+            return False
+        # the cached value read directly: functools.cached_property's first access takes
+        # a lock (Python 3.11), a few microseconds on every new object
+        d = self.__dict__
+        packed = d["_packed"] if "_packed" in d else d.setdefault("_packed", self._pack())
+        return packed is not None
 
     @cached_property
     def _cells(self) -> tuple:
@@ -455,16 +478,23 @@ class PrimitiveTable:
         """Bounding box (N, 2, 3) of every primitive in its own frame, by global index."""
         if not self._compiled_boxes():
             return self._plain_local_boxes()
+        return self._compiled_local_boxes()
+
+    def _compiled_local_boxes(self) -> np.ndarray:
+        """:attr:`local_boxes` from the compiled kernel, cached with
+        :attr:`_local_centre_half` (compiled path only)."""
         k = _kernels()
         out = np.empty((self.n_prims, 2, 3))
         ch = np.empty((2, self.n_prims, 3))
-        if not k.local_boxes(*self._packed, out, ch):  # a prism side count off the kernel's table
+        if not k.local_boxes(*self.__dict__["_packed"], out, ch):  # a prism side count off the kernel's table
             for g, c in zip(self.groups, _kernel_info(self._geoms)[1]):
                 if c == k.CODES[Prism]:
                     b = out[g.prim] = g.geom.bounds_batch(g.P)
                     ch[0, g.prim] = (b[:, 0] + b[:, 1]) * 0.5
                     ch[1, g.prim] = (b[:, 1] - b[:, 0]) * 0.5
-        self.__dict__["_local_centre_half"] = ch
+        d = self.__dict__
+        d["local_boxes"] = out
+        d["_local_centre_half"] = ch
         return out
 
     def _plain_local_boxes(self) -> np.ndarray:
@@ -489,9 +519,17 @@ class PrimitiveTable:
             return out
         # transform_boxes and the union, with its two matrix products left to numpy (BLAS)
         W = self.world_all(link_poses)
-        c, h = self._local_centre_half
-        R = W[:, :3, :3]
-        _kernels().box_union(R @ c[:, :, None], np.abs(R) @ h[:, :, None], W, out)
+        d = self.__dict__
+        if "_local_centre_half" not in d and "local_boxes" not in d:
+            self._compiled_local_boxes()  # sets both, without the cached_property machinery
+        ch = self._local_centre_half
+        # R c and |R| h as one stacked product: each (3, 3) @ (3, 1) item is the same BLAS
+        # call as in two products, one numpy call fewer
+        R = np.empty((2, self.n_prims, 3, 3))
+        R[0] = W[:, :, :3]
+        np.abs(R[0], out=R[1])
+        Rc, Rh = R @ ch[:, :, :, None]
+        _kernels().box_union(Rc, Rh, W, out)
         return out
 
     @cached_property

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import sys
 from dataclasses import dataclass, field
 from functools import cached_property
 
@@ -13,6 +14,15 @@ from artipg.model.part import Part
 
 JOINT_TYPES = ("fixed", "revolute", "prismatic", "continuous")
 _matmul = np.matmul
+
+
+def _table_of(obj):
+    """``PrimitiveTable.of(obj)``; :mod:`artipg.annotate.points` is imported on first use
+    (a function-level import statement costs more than a module lookup)."""
+    m = sys.modules.get("artipg.annotate.points")
+    if m is None:
+        import artipg.annotate.points as m
+    return m.PrimitiveTable.of(obj)
 
 
 @dataclass(eq=False)
@@ -148,26 +158,37 @@ class ArticulatedObject:
     def _levels(self) -> list[tuple]:
         """The non-root links by depth: (links, parent, joint indices, link indices) per
         level, the first three slices or one parent's index when they can be, else arrays."""
+        return self._plan_levels()
+
+    def _plan_levels(self) -> list[tuple]:
+        """:attr:`_levels`, computed."""
         links = self.links
         n = len(links) - 1
         parents = [lk.joint.parent for lk in links[1:]]
         if parents.count(links[0].name) == n:  # every link on the root: one level
             return [(slice(1, n + 1), 0, slice(0, n), range(1, n + 1))] if n else []
-        idx = self.link_index
-        parent = [idx[p] for p in parents]
+        idx = self.__dict__.get("link_index")
+        if idx is None:  # link_index, cached without cached_property's lock
+            idx = self.__dict__["link_index"] = {link.name: i for i, link in enumerate(links)}
+        # the links of each depth, in link order, with their parents
+        by_depth: list[list[int]] = []
         depth = [0] * (n + 1)
-        for i, p in enumerate(parent, 1):
+        for i, name in enumerate(parents, 1):
+            p = idx[name]
             if p >= i:
                 raise ValueError(f"link {links[i].name} comes before its parent")
-            depth[i] = depth[p] + 1
+            d = depth[i] = depth[p] + 1
+            if d > len(by_depth):
+                by_depth.append([])
+            by_depth[d - 1].append(i)
         out = []
-        for d in range(1, max(depth) + 1):
-            kids = [i for i in range(1, n + 1) if depth[i] == d]
-            pars = [parent[i - 1] for i in kids]
+        for kids in by_depth:
+            pars = [idx[parents[i - 1]] for i in kids]
             if kids[-1] - kids[0] == len(kids) - 1:
                 rows, joints = slice(kids[0], kids[-1] + 1), slice(kids[0] - 1, kids[-1])
             else:
-                rows, joints = np.array(kids), np.array(kids) - 1
+                rows = np.array(kids)
+                joints = rows - 1
             out.append((rows, pars[0] if min(pars) == max(pars) else np.array(pars), joints, kids))
         return out
 
@@ -179,10 +200,15 @@ class ArticulatedObject:
         T[0] = IDENTITY
         if len(links) == 1:
             return T
+        # the cached plan read directly: functools.cached_property's first access takes a
+        # lock (Python 3.11), a few microseconds on every new object
+        levels = self.__dict__.get("_levels")
+        if levels is None:
+            levels = self.__dict__["_levels"] = self._plan_levels()
         # a level at a time: T[link] = T[parent] @ origin for all its links at once (the
         # same product for each), then the moved ones times their motion
         origins = np.concatenate([lk.joint.origin for lk in links[1:]]).reshape(-1, 4, 4)
-        for kids, parents, joints, members in self._levels:
+        for kids, parents, joints, members in levels:
             A = T[parents] @ origins[joints]
             if q:
                 for k, i in enumerate(members):
@@ -210,15 +236,16 @@ class ArticulatedObject:
     @cached_property
     def primitive_table(self):
         """Primitives grouped by geometry template (see :mod:`artipg.annotate.points`)."""
-        from artipg.annotate.points import PrimitiveTable
-
-        return PrimitiveTable.of(self)
+        return _table_of(self)
 
     def bounds(self, qpos=None) -> np.ndarray:
         """Axis-aligned bounding box (2, 3) of the object at ``qpos``: the union of each
         primitive's local box transformed to the object frame, so exact for boxes and
         axis-aligned solids and slightly loose for rotated round ones."""
-        return self.primitive_table.bounds(self.link_poses(qpos))
+        table = self.__dict__.get("primitive_table")
+        if table is None:  # as primitive_table, without cached_property's lock
+            table = self.__dict__["primitive_table"] = _table_of(self)
+        return table.bounds(self.link_poses(qpos))
 
     def sample_points(self, n: int = 2048, seed: int = 0, qpos=None, parts=None):
         """Area-uniform labelled surface points; see :func:`artipg.annotate.points.sample_points`."""
