@@ -19,7 +19,7 @@ from artipg.geometry.box import Cuboid
 from artipg.geometry.revolve import Frustum, Ring, Sphere, Torus
 from artipg.validate import Tolerances, check_object, compiled
 from artipg.validate.api import _SAMPLE_SEED
-from artipg.validate.checks import _OVERLAP, _scenes
+from artipg.validate.checks import _OVERLAP, _scenes, refine_rest
 from artipg.validate.contacts import close_pairs, pair_distance, refine_distance, world_boxes
 from artipg.validate.kinematics import Kinematics, rotations
 from artipg.validate.shapes import Pieces, _sample_group
@@ -392,16 +392,7 @@ def test_compiled_contact_graphs_equal_numpy(category):
 def _numpy_verdicts(pieces, W0, c0, h0, scenes, tol):
     """run_checks' numpy steps after the scenes: the refined rest rows, then each
     scene's colliding rows and lowest distance (inf: none; rest: different links)."""
-    rest = scenes[0]
-    ra, rb, rd = rest["a"], rest["b"], rest["d"]
-    amb = (~(pieces.is_box[ra] & pieces.is_box[rb]) & (rd > tol.floating)).nonzero()[0]
-    if len(amb):
-        ia, ib = ra[amb], rb[amb]
-        lb = np.sqrt((np.maximum(np.abs(c0[ia] - c0[ib]) - h0[ia] - h0[ib], 0.0) ** 2).sum(axis=1))
-        amb = amb[lb <= tol.floating]
-    if len(amb):
-        rd[amb] = np.minimum(rd[amb], refine_distance(pieces, ra[amb], rb[amb], W0[ra[amb]], W0[rb[amb]], iters=3,
-                                                      stop_below=tol.floating))
+    amb = refine_rest(pieces, W0, c0, h0, scenes[0], tol)
     out = []
     for i, s in enumerate(scenes):
         D = s["d"]

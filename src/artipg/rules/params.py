@@ -151,6 +151,19 @@ class _Draws:
 
 
 _new = object.__new__
+
+
+def _param(name: str, kind: str, value, lo, hi, options: tuple) -> Param:
+    """``Param(name, kind, value, lo, hi, options)`` without the class call and its
+    ``__init__`` (a recorder makes one per draw, 50-100 per object)."""
+    p = _new(Param)
+    p.name = name
+    p.kind = kind
+    p.value = value
+    p.lo = lo
+    p.hi = hi
+    p.options = options
+    return p
 _FLAG_OPTIONS = (False, True)
 
 
@@ -249,15 +262,7 @@ class ParamRecorder:
             o = self.overrides.get(key)
             if o is not None:
                 v = min(hi, max(lo, float(o)))
-        # Param(key, "uniform", v, lo, hi) without its __init__ call: the most frequent draw
-        p = _new(Param)
-        p.name = key
-        p.kind = "uniform"
-        p.value = v
-        p.lo = lo
-        p.hi = hi
-        p.options = ()
-        self.record[key] = p
+        self.record[key] = _param(key, "uniform", v, lo, hi, ())
         return v
 
     def integers(self, name: str, lo: int, hi: int, fixed: int | None = None) -> int:
@@ -275,14 +280,7 @@ class ParamRecorder:
             o = self.overrides.get(key)
             if o is not None:
                 v = min(hi, max(lo, int(round(o))))
-        p = _new(Param)  # Param(key, "integer", v, lo, hi) without its __init__ call
-        p.name = key
-        p.kind = "integer"
-        p.value = v
-        p.lo = lo
-        p.hi = hi
-        p.options = ()
-        self.record[key] = p
+        self.record[key] = _param(key, "integer", v, lo, hi, ())
         return v
 
     def choice(self, name: str, options, fixed=None):
@@ -312,14 +310,8 @@ class ParamRecorder:
             o = self.overrides.get(key)
             if o is not None and option_name(o) in names:
                 i = names.index(option_name(o))
-        p = _new(Param)  # Param(key, "choice", names[i], None, None, names) without __init__
-        p.name = key
-        p.kind = "choice"
-        p.value = chosen = names[i]
-        p.lo = p.hi = None
-        p.options = names
-        self.record[key] = p
-        return opts[i], chosen
+        self.record[key] = _param(key, "choice", names[i], None, None, names)
+        return opts[i], names[i]
 
     def flag(self, name: str, p: float, fixed: bool | None = None) -> bool:
         """True with probability ``p``."""
@@ -334,11 +326,5 @@ class ParamRecorder:
             if o is not None:
                 v = bool(o)
         v = bool(v)
-        p = _new(Param)  # Param(key, "flag", v, None, None, (False, True)) without __init__
-        p.name = key
-        p.kind = "flag"
-        p.value = v
-        p.lo = p.hi = None
-        p.options = _FLAG_OPTIONS
-        self.record[key] = p
+        self.record[key] = _param(key, "flag", v, None, None, _FLAG_OPTIONS)
         return v

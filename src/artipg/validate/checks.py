@@ -85,9 +85,22 @@ def run_checks(kin: Kinematics, pieces: Pieces, tol: Tolerances = Tolerances()) 
     else:
         W0, c0, h0, scenes = _scenes(kin, pieces, tol)
     rest_s = scenes[0]
-    # curved pieces whose samples say "apart" while their boxes say "maybe touching"
-    # (a ball on a plane): refine the distance before judging contact
-    ra, rb, rd = rest_s["a"], rest_s["b"], rest_s["d"]
+    refine_rest(pieces, W0, c0, h0, rest_s, tol)
+    return {
+        "penetration": _penetration(kin, pieces, rest_s, tol),
+        "floating": _floating(kin, pieces, W0, rest_s, tol),
+        "joint_sweep": _sweep_result(kin, pieces, scenes[1], scenes[2:], tol),
+    }
+
+
+def refine_rest(pieces: Pieces, W0: np.ndarray, c0: np.ndarray, h0: np.ndarray, rest: dict,
+                tol: Tolerances) -> np.ndarray:
+    """Refine, in place, the rest scene's distances ``rest["d"]`` of curved pieces whose
+    samples say "apart" while their boxes say "maybe touching" (a ball on a plane), before
+    contact is judged: the numpy step that :func:`artipg.validate.jit_verdicts.verdicts`
+    compiles. ``W0`` (N, 4, 4) are the piece frames at rest, ``c0``, ``h0`` (N, 3) the
+    centres and half extents of their world boxes (metres). Returns the refined rows (k,)."""
+    ra, rb, rd = rest["a"], rest["b"], rest["d"]
     amb = (~(pieces.is_box[ra] & pieces.is_box[rb]) & (rd > tol.floating)).nonzero()[0]
     if len(amb):
         ia, ib = ra[amb], rb[amb]
@@ -96,11 +109,7 @@ def run_checks(kin: Kinematics, pieces: Pieces, tol: Tolerances = Tolerances()) 
     if len(amb):
         rd[amb] = np.minimum(rd[amb], refine_distance(pieces, ra[amb], rb[amb], W0[ra[amb]], W0[rb[amb]],
                                                       iters=3, stop_below=tol.floating))
-    return {
-        "penetration": _penetration(kin, pieces, rest_s, tol),
-        "floating": _floating(kin, pieces, W0, rest_s, tol),
-        "joint_sweep": _sweep_result(kin, pieces, scenes[1], scenes[2:], tol),
-    }
+    return amb
 
 
 def _compiled_results(kin, pieces, W0, scenes, rows, tol) -> dict[str, CheckResult]:
