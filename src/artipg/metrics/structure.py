@@ -87,7 +87,9 @@ def summarize_structure(structures) -> dict:
         and ``histogram``: {bin label: fraction}); ``joint_types`` ({type: joints of that
         type per object, averaged}); ``links`` (mean/std/median/min/max of links per
         object); ``size`` ({"depth_x", "width_y", "height_z", "diagonal"}: mean/std/
-        median/min/max in metres).
+        median/min/max in metres); ``proportions`` ({"height_width", "depth_width"}:
+        the same statistics of the extents' ratios, unit-free, so unit-less sets such as
+        PartNet-Mobility compare with metric ones).
     """
     s = list(structures)
     joints = np.array([o.n_joints for o in s], dtype=float)
@@ -102,4 +104,12 @@ def summarize_structure(structures) -> dict:
         "links": _describe(links),
         "size": {"depth_x": _describe(ext[:, 0]), "width_y": _describe(ext[:, 1]), "height_z": _describe(ext[:, 2]),
                  "diagonal": _describe(np.linalg.norm(ext, axis=1))},
+        "proportions": {"height_width": _describe(_ratio(ext[:, 2], ext[:, 1])),
+                        "depth_width": _describe(_ratio(ext[:, 0], ext[:, 1]))},
     }
+
+
+def _ratio(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """``a / b`` where ``b > 0`` (objects of zero width are left out)."""
+    keep = b > 0
+    return a[keep] / b[keep]
