@@ -18,7 +18,7 @@ from typing import Callable, Sequence
 import numpy as np
 
 from artipg.io.dataset import ObjectSet
-from artipg.metrics.structure import ObjectStructure
+from artipg.io.structure import ObjectStructure
 
 #: Per category, the fraction of each movable revolute joint's range (from artipg's rest
 #: value 0 towards its upper limit) at which PartNet-Mobility models that category's

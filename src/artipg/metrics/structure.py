@@ -9,42 +9,12 @@ as in the paper's Fig. 4 (which shows 1-9 and >= 10).
 from __future__ import annotations
 
 from collections import Counter
-from dataclasses import dataclass, field
 
 import numpy as np
 
-MOVABLE_TYPES = ("revolute", "continuous", "prismatic", "planar", "floating")
+from artipg.io.structure import MOVABLE_TYPES, ObjectStructure  # noqa: F401 - re-exported
+
 JOINT_BINS = tuple(str(i) for i in range(10)) + ("10+",)
-
-
-@dataclass(frozen=True)
-class ObjectStructure:
-    """Kinematic structure and size of one object at its rest pose.
-
-    Attributes
-    ----------
-    joint_types : tuple of str
-        URDF type of every joint, fixed ones included.
-    n_links : int
-        Links that carry visual geometry.
-    extents : (3,) float ndarray
-        Axis-aligned bounding-box size (x depth, y width, z height) at the rest pose,
-        in the units of the source (metres for artipg and PartNet-Mobility).
-    """
-
-    joint_types: tuple
-    n_links: int
-    extents: np.ndarray = field(compare=False)
-
-    @property
-    def n_joints(self) -> int:
-        """Number of movable joints."""
-        return sum(1 for t in self.joint_types if t in MOVABLE_TYPES)
-
-    @property
-    def diagonal(self) -> float:
-        """Bounding-box diagonal (same units as ``extents``)."""
-        return float(np.linalg.norm(self.extents))
 
 
 def joint_histogram(counts) -> np.ndarray:
