@@ -20,28 +20,36 @@ import numpy as np
 from artipg.io.dataset import ObjectSet
 from artipg.io.structure import ObjectStructure
 
-#: Per category, the fraction of each movable revolute joint's range (from artipg's rest
-#: value 0 towards its upper limit) at which PartNet-Mobility models that category's
-#: objects; categories not listed are modelled at rest (closed). Laptops: screens open
-#: at about 105 degrees (the median opening of the development split's laptops).
-PARTNET_POSE = {"laptop": {"revolute": 1.95}}
+#: Per category, the range of values (radians for revolute, metres for prismatic) of the
+#: movable joints of each listed type in the pose PartNet-Mobility models the category
+#: in; each object draws its own value uniformly from the range (the modellers left
+#: each object at its own angle). Categories not listed are modelled at rest (closed).
+#: Laptops: screens open between 90 and 135 degrees (1.57-2.36 rad, the closing ranges
+#: of the development split's laptops).
+PARTNET_POSE = {"laptop": {"revolute": (1.57, 2.36)}}
 
 POSES = ("rest", "partnet")
+
+#: Stream key of the modelled-pose draw (independent of generation and point sampling).
+_POSE_STREAM = 0x9A57
 
 
 def partnet_qpos(obj, category: str) -> dict:
     """Joint values (name -> value) of ``obj`` in PartNet-Mobility's modelled pose.
 
-    For a listed category every movable joint of a listed type goes to the given
-    value, clipped to its limits (radians for revolute, metres for prismatic);
-    everything else stays at 0 (rest).
+    For a listed category every movable joint of a listed type takes a value drawn
+    from the type's range (the same value for every such joint of the object; one draw
+    per object seed), clipped to the joint's limits; everything else stays at 0.
     """
     rule = PARTNET_POSE.get(category, {})
+    if not rule:
+        return {}
+    u = np.random.default_rng([int(obj.seed), _POSE_STREAM]).random()
     q = {}
     for j in obj.movable_joints:
         if j.type in rule:
-            lo, hi = j.limits
-            q[j.name] = float(np.clip(rule[j.type], lo, hi))
+            lo, hi = rule[j.type]
+            q[j.name] = float(np.clip(lo + u * (hi - lo), *j.limits))
     return q
 
 
