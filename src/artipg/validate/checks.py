@@ -23,12 +23,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from artipg.validate import compiled
-from artipg.validate.contacts import (_DENSE, close_pairs, deepest_point, overlapping, pair_distance, refine_distance,
-                                      world_boxes)
+from artipg.validate.contacts import close_pairs, deepest_point, overlapping, pair_distance, refine_distance, world_boxes
 from artipg.validate.kinematics import Kinematics, rigid_inverse, rotations
 from artipg.validate.report import CheckResult, Issue
-from artipg.validate.shapes import Pieces, _kernels_match
+from artipg.validate.shapes import Pieces
 
 
 @dataclass(frozen=True)
@@ -76,14 +74,7 @@ def run_checks(kin: Kinematics, pieces: Pieces, tol: Tolerances = Tolerances()) 
     dict
         ``{"penetration": CheckResult, "floating": ..., "joint_sweep": ...}``.
     """
-    if compiled.ENABLED and pieces.n <= _DENSE and _kernels_match():
-        from artipg.validate.jit_scenes import measure
-
-        W0, c0, h0, scenes, rows = measure(kin, pieces, tol, _OVERLAP)
-        if rows[4] is not None:
-            return _compiled_results(kin, pieces, W0, scenes, rows, tol)
-    else:
-        W0, c0, h0, scenes = _scenes(kin, pieces, tol)
+    W0, c0, h0, scenes = _scenes(kin, pieces, tol)
     rest_s = scenes[0]
     refine_rest(pieces, W0, c0, h0, rest_s, tol)
     return {
@@ -97,8 +88,7 @@ def refine_rest(pieces: Pieces, W0: np.ndarray, c0: np.ndarray, h0: np.ndarray, 
                 tol: Tolerances) -> np.ndarray:
     """Refine, in place, the rest scene's distances ``rest["d"]`` of curved pieces whose
     samples say "apart" while their boxes say "maybe touching" (a ball on a plane), before
-    contact is judged: the numpy step that :func:`artipg.validate.jit_verdicts.verdicts`
-    compiles. ``W0`` (N, 4, 4) are the piece frames at rest, ``c0``, ``h0`` (N, 3) the
+    contact is judged. ``W0`` (N, 4, 4) are the piece frames at rest, ``c0``, ``h0`` (N, 3) the
     centres and half extents of their world boxes (metres). Returns the refined rows (k,)."""
     ra, rb, rd = rest["a"], rest["b"], rest["d"]
     amb = (~(pieces.is_box[ra] & pieces.is_box[rb]) & (rd > tol.floating)).nonzero()[0]
@@ -110,33 +100,6 @@ def refine_rest(pieces: Pieces, W0: np.ndarray, c0: np.ndarray, h0: np.ndarray, 
         rd[amb] = np.minimum(rd[amb], refine_distance(pieces, ra[amb], rb[amb], W0[ra[amb]], W0[rb[amb]],
                                                       iters=3, stop_below=tol.floating))
     return amb
-
-
-def _compiled_results(kin, pieces, W0, scenes, rows, tol) -> dict[str, CheckResult]:
-    """:func:`run_checks` from the scenes of :func:`artipg.validate.jit_scenes.measure`
-    (``rows``: their pairs and distances concatenated, the rest rows to refine): the
-    refinement and the reductions of the distances in one kernel
-    (:func:`artipg.validate.jit_verdicts.verdicts`), the issues as the numpy code."""
-    from artipg.validate.jit_contacts import _H, _OFFS, _ON_SURFACE
-    from artipg.validate.jit_verdicts import verdicts
-
-    a, b, d, sizes, amb, undrawn = rows
-    if undrawn:
-        pieces.require(np.concatenate([a[amb], b[amb]]))
-    code, aux, _ = pieces.jit_table
-    (bad, n_bad, low, comp, pcomp, has_geom, has_piece, several, split) = verdicts(
-        amb, a, b, W0, d, sizes, 3, 3, pieces.params, code, aux, pieces.points_t, pieces.start, pieces.count, _H,
-        _ON_SURFACE, _OFFS, pieces.link, pieces.part, pieces.part_link, kin.n_links, len(pieces.part_names),
-        float(tol.floating), float(tol.penetration))
-    cut = np.concatenate([[0], n_bad.cumsum()])
-    low = low.tolist()
-    per = [(bad[cut[i]:cut[i + 1]], low[i]) for i in range(len(low))]
-    graphs = (comp, pcomp, has_geom, has_piece, split, several)
-    return {
-        "penetration": _penetration(kin, pieces, scenes[0], tol, per[0]),
-        "floating": _floating(kin, pieces, W0, scenes[0], tol, graphs),
-        "joint_sweep": _sweep_result(kin, pieces, scenes[1], scenes[2:], tol, per[1:]),
-    }
 
 
 def _scenes(kin, pieces, tol):
@@ -308,16 +271,12 @@ def _worst_per_group(keys: np.ndarray, values: np.ndarray):
     return order[first]
 
 
-def _penetration(kin, pieces, s, tol, verdict=None) -> CheckResult:
-    """``verdict``: the colliding rows and the lowest distance between different
-    links (inf: none) when known (:func:`artipg.validate.jit_verdicts.verdicts`)."""
+def _penetration(kin, pieces, s, tol) -> CheckResult:
+    """Pairs of pieces of different links at rest deeper in each other than the tolerance."""
     a, b, D = s["a"], s["b"], s["d"]
-    if verdict is None:
-        cross = pieces.link[a] != pieces.link[b]
-        bad = (cross & (D < -tol.penetration)).nonzero()[0]
-        low = float(D[cross].min()) if cross.any() else np.inf
-    else:
-        bad, low = verdict
+    cross = pieces.link[a] != pieces.link[b]
+    bad = (cross & (D < -tol.penetration)).nonzero()[0]
+    low = float(D[cross].min()) if cross.any() else np.inf
     issues = []
     if len(bad):
         parts = np.sort(np.column_stack([pieces.part[a[bad]], pieces.part[b[bad]]]), axis=1)
@@ -378,8 +337,11 @@ def _gap(pieces, W0, src_mask, tgt_mask) -> float:
 
 
 def _contact_graphs(L, P, pieces, a, b, D, tol):
-    """:func:`artipg.validate.jit_scenes.contact_graphs` in numpy: the link and part
-    contact graphs of the rest pairs (see there)."""
+    """The contact graphs of the rest pairs (``D``: their distances) of ``L`` links
+    and ``P`` parts: the component label of every link (touching across links) and
+    of every part (touching within a link), whether each link / part has pieces, the
+    lowest and highest part component of every link, and whether the links with
+    geometry fall into several components."""
     touch = D <= tol.floating
     has_geom = np.bincount(pieces.link, minlength=L) > 0
     cross = touch & (pieces.link[a] != pieces.link[b])
@@ -396,24 +358,15 @@ def _contact_graphs(L, P, pieces, a, b, D, tol):
     return comp, pcomp, has_geom, has_piece, lo, hi, several
 
 
-def _floating(kin, pieces, W0, s, tol, graphs=None) -> CheckResult:
-    """``graphs``: ``(comp, pcomp, has_geom, has_piece, split, several)`` when known
-    (:func:`artipg.validate.jit_verdicts.verdicts`)."""
+def _floating(kin, pieces, W0, s, tol) -> CheckResult:
+    """Links that touch no other link (through the contact graph of the rest pairs
+    ``s``) and parts that touch no other part of their link."""
     a, b, D = s["a"], s["b"], s["d"]
     issues = []
     L = kin.n_links
     P = len(pieces.part_names)
-    if graphs is not None:
-        comp, pcomp, has_geom, has_piece, split, several = graphs
-    else:
-        if compiled.ENABLED:
-            from artipg.validate.jit_scenes import contact_graphs
-
-            comp, pcomp, has_geom, has_piece, lo, hi, several = contact_graphs(
-                L, P, pieces.link, pieces.part, pieces.part_link, a, b, D, float(tol.floating))
-        else:
-            comp, pcomp, has_geom, has_piece, lo, hi, several = _contact_graphs(L, P, pieces, a, b, D, tol)
-        split = (hi > lo).nonzero()[0]
+    comp, pcomp, has_geom, has_piece, lo, hi, several = _contact_graphs(L, P, pieces, a, b, D, tol)
+    split = (hi > lo).nonzero()[0]
     # links: one contact graph holding the root (or the first link with geometry)
     if several:
         geo = has_geom.nonzero()[0]
@@ -485,34 +438,25 @@ def _needs_open(kin, pieces, sw, tol, bad):
     the deepest penetration (P,) of each with k open (< 0: opening k clears the way for
     j; 0 where no pair of pieces overlaps); the index into ``pairs`` of each bad row
     (-1: no blocker)."""
-    if compiled.ENABLED and _kernels_match():
-        from artipg.validate.jit_scenes import needs_open_rows
-
-        row_pair, pj, pk, A, B, Wa, Wb, owner = needs_open_rows(
-            bad, sw["scene"], sw["joint"], sw["q"], sw["b"], sw["movable"], kin.parent, kin.not_fixed,
-            kin.type_codes, kin.limits, kin.origin, kin.axis, kin.descendants, pieces.link, pieces.T, pieces.center,
-            pieces.half, -_OVERLAP)
-        pairs = list(zip(pj.tolist(), pk.tolist()))
-    else:
-        j, k = _blockers(kin, pieces, sw, bad)
-        sel = (k > 0).nonzero()[0]
-        keys, first, inv = np.unique(j[sel] * kin.n_links + k[sel], return_index=True, return_inverse=True)
-        order = np.argsort(first)  # in order of first occurrence
-        rank = np.empty(len(order), dtype=np.int64)
-        rank[order] = np.arange(len(order))
-        row_pair = np.full(len(bad), -1, dtype=np.int64)
-        row_pair[sel] = rank[inv.reshape(-1)]
-        pairs = [(int(x) // kin.n_links, int(x) % kin.n_links) for x in keys[order]]
-        if not pairs:
-            return pairs, np.zeros(0), row_pair
-        up = kin.open_values(1.0)
-        Qs = []
-        for j, k in pairs:
-            qs = kin.sweep_values(j, tol.sweep_poses)
-            Q = np.zeros((len(qs), kin.n_links))
-            Q[:, j], Q[:, k] = qs, up[kin.joint_names[k]]
-            Qs.append(Q)
-        A, B, Wa, Wb, owner = _blocked_rows(kin, pieces, pairs, Qs)
+    j, k = _blockers(kin, pieces, sw, bad)
+    sel = (k > 0).nonzero()[0]
+    keys, first, inv = np.unique(j[sel] * kin.n_links + k[sel], return_index=True, return_inverse=True)
+    order = np.argsort(first)  # in order of first occurrence
+    rank = np.empty(len(order), dtype=np.int64)
+    rank[order] = np.arange(len(order))
+    row_pair = np.full(len(bad), -1, dtype=np.int64)
+    row_pair[sel] = rank[inv.reshape(-1)]
+    pairs = [(int(x) // kin.n_links, int(x) % kin.n_links) for x in keys[order]]
+    if not pairs:
+        return pairs, np.zeros(0), row_pair
+    up = kin.open_values(1.0)
+    Qs = []
+    for j, k in pairs:
+        qs = kin.sweep_values(j, tol.sweep_poses)
+        Q = np.zeros((len(qs), kin.n_links))
+        Q[:, j], Q[:, k] = qs, up[kin.joint_names[k]]
+        Qs.append(Q)
+    A, B, Wa, Wb, owner = _blocked_rows(kin, pieces, pairs, Qs)
     worst = np.full(len(pairs), -np.inf)
     if len(A):
         np.maximum.at(worst, owner, -pair_distance(pieces, A, B, Wa, Wb, 0.0))
@@ -547,12 +491,10 @@ def _blocked_rows(kin, pieces, pairs, Qs):
     return (np.concatenate(A), np.concatenate(B), np.concatenate(Wa), np.concatenate(Wb), np.concatenate(owner))
 
 
-def _sweep_result(kin, pieces, sw, opens, tol, verdicts=None) -> CheckResult:
-    """``verdicts``: the colliding rows and the lowest distance (inf: no rows) of the
-    sweep and of each open scene when known (:func:`artipg.validate.jit_verdicts.verdicts`)."""
-    if verdicts is None:
-        verdicts = [((s["d"] < -tol.penetration).nonzero()[0], float(s["d"].min()) if len(s["d"]) else np.inf)
-                    for s in [sw] + list(opens)]
+def _sweep_result(kin, pieces, sw, opens, tol) -> CheckResult:
+    """Collisions of the joint sweeps ``sw`` and the all-joints-open scenes ``opens``."""
+    verdicts = [((s["d"] < -tol.penetration).nonzero()[0], float(s["d"].min()) if len(s["d"]) else np.inf)
+                for s in [sw] + list(opens)]
     issues = []
     D = sw["d"]
     bad, low = verdicts[0]

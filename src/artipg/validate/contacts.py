@@ -24,9 +24,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from artipg.validate import compiled
+from artipg.geometry.box import _box_rows_sdf
 from artipg.validate.kinematics import rigid_inverse
-from artipg.validate.rowsdf import cuboid_rows
 from artipg.validate.shapes import Pieces
 
 _CORNERS = np.array([[a, b, c] for a in (-0.5, 0.5) for b in (-0.5, 0.5) for c in (-0.5, 0.5)])
@@ -66,7 +65,6 @@ def overlapping(ca, ha, cb, hb, pad: float) -> np.ndarray:
 
 #: Largest number of boxes for which :func:`close_pairs` tests all pairs directly.
 _DENSE = 256
-_NO_LABEL = np.zeros(0, dtype=np.int64)
 
 
 def close_pairs(c: np.ndarray, h: np.ndarray, pad: float, label: np.ndarray | None = None
@@ -81,10 +79,6 @@ def close_pairs(c: np.ndarray, h: np.ndarray, pad: float, label: np.ndarray | No
     the same test is applied to these candidates.
     """
     M = len(c)
-    if M <= _DENSE and compiled.ENABLED:
-        from artipg.validate.jit_pairs import close_pairs as close_pairs_jit
-
-        return close_pairs_jit(c, h, float(pad), _NO_LABEL if label is None else label)
     if M <= _DENSE:
         ok = overlapping(c, h, c, h, pad)
         if label is not None:
@@ -136,10 +130,6 @@ def pair_distance(pieces: Pieces, a: np.ndarray, b: np.ndarray, Wa: np.ndarray, 
     if K == 0:
         return out
     margin = _per_row(margin, K)
-    if pieces.jit_table is not None:
-        from artipg.validate import jit_contacts
-
-        return jit_contacts.pair_distance(pieces, a, b, Wa, Wb, margin)
     box = pieces.is_box[a] & pieces.is_box[b]
     i = box.nonzero()[0]
     if len(i):
@@ -289,8 +279,8 @@ def box_distance(ha, hb, Wa, Wb, edge_margin=None) -> np.ndarray:
     vb_a = (R[:, None, 0, :] * vb[..., 0, None] + R[:, None, 1, :] * vb[..., 1, None]
             + R[:, None, 2, :] * vb[..., 2, None] + u[:, None, :])
     K = len(ha)
-    d1 = cuboid_rows((2 * hb).repeat(8, axis=0), va_b.reshape(-1, 3)).reshape(K, 8).min(axis=1)
-    d2 = cuboid_rows((2 * ha).repeat(8, axis=0), vb_a.reshape(-1, 3)).reshape(K, 8).min(axis=1)
+    d1 = _box_sdf(2 * hb, va_b)
+    d2 = _box_sdf(2 * ha, vb_a)
     out = np.minimum(d1, d2)
     if edge_margin is not None:  # edges matter only where the vertex bound is not yet enough
         need = (out > edge_margin).nonzero()[0]
@@ -303,6 +293,15 @@ def box_distance(ha, hb, Wa, Wb, edge_margin=None) -> np.ndarray:
         d3 = segment_distance(p0[:, :, None], p1[:, :, None], q0[:, None], q1[:, None]).reshape(len(need), -1)
         out[need] = np.minimum(out[need], d3.min(axis=1))
     return out
+
+
+def _box_sdf(size: np.ndarray, x: np.ndarray) -> np.ndarray:
+    """Smallest signed distance (K,) of points ``x`` (K, V, 3) to centred boxes of
+    extents ``size`` (K, 3): :meth:`artipg.geometry.Cuboid.sdf`'s formula with one box
+    per row (its (3, 1, n) broadcast form)."""
+    K, V = x.shape[:2]
+    ax = np.abs(x.reshape(-1, 3).T)[:, None, :]  # (3, 1, K V)
+    return _box_rows_sdf(ax, size.repeat(V, axis=0).T)[0].reshape(K, V).min(axis=1)
 
 
 def segment_distance(p0, p1, q0, q1) -> np.ndarray:
@@ -416,11 +415,6 @@ def refine_distance(pieces: Pieces, a: np.ndarray, b: np.ndarray, Wa: np.ndarray
     K = len(a)
     if K == 0:
         return np.zeros(0)
-    if pieces.jit_table is not None:
-        from artipg.validate import jit_base, jit_contacts
-
-        if jit_base.kernels_match():
-            return jit_contacts.refine_distance(pieces, a, b, Wa, Wb, starts, iters, stop_below)
     src = np.concatenate([a, b])
     tgt = np.concatenate([b, a])
     Ws = np.concatenate([Wa, Wb])
