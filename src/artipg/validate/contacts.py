@@ -181,17 +181,13 @@ def box_box(ha: np.ndarray, hb: np.ndarray, Wa: np.ndarray, Wb: np.ndarray, marg
 
 def _sat_box_box(ha, hb, Wa, Wb, margin) -> np.ndarray:
     """:func:`box_box` by the separating-axis test over the 15 axes of two oriented boxes."""
-    K = len(ha)
     A = Wa[:, :3, :3]  # columns: box axes in the world
     B = Wb[:, :3, :3]
     t = Wb[:, :3, 3] - Wa[:, :3, 3]
     # everything in a's frame: R = A^T B (columns: b's axes), T = A^T t
     R = A[:, 0, :, None] * B[:, 0, None, :] + A[:, 1, :, None] * B[:, 1, None, :] + A[:, 2, :, None] * B[:, 2, None, :]
     T = A[:, 0] * t[:, 0, None] + A[:, 1] * t[:, 1, None] + A[:, 2] * t[:, 2, None]
-    # the 15 candidate axes (a's, b's, a_i x b_j), unnormalised, in a's frame; for
-    # many pairs one coordinate at a time ((K, 15) arrays: contiguous passes), for a
-    # few as (K, 15, 3) arrays (fewer passes); the same sums in the same order
-    over = (_sat_overlaps_rows if K >= _SAT_ROWS else _sat_overlaps)(ha, hb, R, T)
+    over = _sat_overlaps(ha, hb, R, T)
     depth = over.min(axis=1)
     out = -depth
     sep = depth < 0
@@ -203,28 +199,10 @@ def _sat_box_box(ha, hb, Wa, Wb, margin) -> np.ndarray:
 
 
 def _sat_overlaps(ha, hb, R, T) -> np.ndarray:
-    """Overlap (K, 15) of boxes ``ha``, ``hb`` (K, 3) along the separating axes, in a's
-    frame (``R``: b's axes as columns, ``T``: b's centre; inf for degenerate axes)."""
-    K = len(ha)
-    axes = np.zeros((K, 15, 3))
-    axes[:, 0, 0] = axes[:, 1, 1] = axes[:, 2, 2] = 1.0
-    axes[:, 3:6] = R.transpose(0, 2, 1)
-    vx, vy, vz = R[:, 0], R[:, 1], R[:, 2]  # (K, 3): components of b_j
-    axes[:, 6:9, 1], axes[:, 6:9, 2] = -vz, vy     # a_0 x b_j
-    axes[:, 9:12, 0], axes[:, 9:12, 2] = vz, -vx   # a_1 x b_j
-    axes[:, 12:15, 0], axes[:, 12:15, 1] = -vy, vx  # a_2 x b_j
-    n = np.sqrt((axes * axes).sum(axis=2))
-    ok = n > 1e-9
-    ra = (np.abs(axes) * ha[:, None, :]).sum(axis=2)
-    P = axes[..., 0, None] * R[:, None, 0] + axes[..., 1, None] * R[:, None, 1] + axes[..., 2, None] * R[:, None, 2]
-    rb = (np.abs(P) * hb[:, None, :]).sum(axis=2)
-    dist = np.abs((axes * T[:, None, :]).sum(axis=2))
-    over = (ra + rb - dist) / np.where(ok, n, 1.0)  # overlap along each axis (negative: separated)
-    return np.where(ok, over, np.inf)
-
-
-def _sat_overlaps_rows(ha, hb, R, T) -> np.ndarray:
-    """:func:`_sat_overlaps` with each coordinate of the axes as a (K, 15) array."""
+    """Overlap (K, 15) of boxes ``ha``, ``hb`` (K, 3) along the 15 candidate separating
+    axes (a's, b's, a_i x b_j; unnormalised, in a's frame, one coordinate per (K, 15)
+    array), ``R``: b's axes as columns, ``T``: b's centre, both in a's frame; inf for
+    degenerate axes."""
     K = len(ha)
     ax, ay, az = np.zeros((3, K, 15))
     ax[:, 0] = ay[:, 1] = az[:, 2] = 1.0
@@ -240,10 +218,6 @@ def _sat_overlaps_rows(ha, hb, R, T) -> np.ndarray:
     dist = np.abs(ax * T[:, 0, None] + ay * T[:, 1, None] + az * T[:, 2, None])
     over = (ra + (rb[0] + rb[1] + rb[2]) - dist) / np.where(ok, n, 1.0)
     return np.where(ok, over, np.inf)
-
-
-#: Pairs from which :func:`_sat_box_box` works one coordinate at a time.
-_SAT_ROWS = 32
 
 
 def _aligned_box_box(ha, hb, Wa, Wb, margin) -> np.ndarray:
