@@ -144,8 +144,8 @@ def test_piece_sdfs_are_each_templates_sdf(category):
         for i, r in enumerate(rows.tolist()):
             g = pieces.geom[r]
             want[i] = g.sdf(tuple(pieces.params[r, :len(g.params)]), x[[i]])[0]
-        assert np.array_equal(pieces.sdf(rows, x), want)
-        assert np.array_equal(pieces.prepare(rows)(x), want)
+        np.testing.assert_allclose(pieces.sdf(rows, x), want, rtol=0, atol=1e-12)
+        np.testing.assert_allclose(pieces.prepare(rows)(x), want, rtol=0, atol=1e-12)
 
 
 @pytest.mark.parametrize("category", CATEGORIES)
