@@ -28,7 +28,9 @@ from functools import cached_property
 
 import numpy as np
 
+from artipg.geometry.base import pick
 from artipg.geometry.box import Cuboid, RectRing
+from artipg.geometry.patches import sample_family
 from artipg.geometry.prism import Prism, TriPrism
 from artipg.geometry.revolve import Frustum, Ring, Sphere, Torus
 
@@ -300,9 +302,12 @@ def sample_counts(geom, P: np.ndarray) -> np.ndarray:
 def sample_surface(geom, P: np.ndarray, rng: np.random.Generator) -> tuple[np.ndarray, np.ndarray]:
     """Surface samples of the pieces ``P`` (M, p) of one geometry template, local frames.
 
-    Every component of every piece gets :func:`sample_counts` points from the
-    template's own :meth:`~artipg.geometry.base.GeometryTemplate.sample_components`;
-    boxes also get their corners and edge midpoints.
+    Every component of every piece gets :func:`sample_counts` points, drawn as the
+    template's own :meth:`~artipg.geometry.base.GeometryTemplate.sample_components`
+    of the pieces repeated per sample draws them (the same patch pick and patch
+    samplers, :func:`artipg.geometry.patches.sample_family`), with the patch tables
+    built once per piece instead of once per sample; boxes also get their corners
+    and edge midpoints.
 
     Returns
     -------
@@ -315,7 +320,18 @@ def sample_surface(geom, P: np.ndarray, rng: np.random.Generator) -> tuple[np.nd
     M, C = n.shape
     cell = np.arange(M * C).repeat(n.ravel())  # (piece, component) of each sample, piece-major
     row = cell // C
-    pts, _ = geom.sample_components(P[row], cell % C, rng)
+    comp = cell % C
+    blocks = geom.patches(P)
+    area = np.concatenate([b.area for b in blocks])  # (patches, M)
+    pcomp = np.concatenate([b.comp for b in blocks])
+    which = pick(np.where(pcomp[None, :] == comp[:, None], area.T[row], 0.0), rng)
+    pts = np.empty((len(row), 3))
+    start = 0
+    for b in blocks:
+        sel = np.flatnonzero((which >= start) & (which < start + len(b.comp)))
+        if len(sel):
+            pts[sel] = sample_family(b.family, b.params[which[sel] - start, :, row[sel]].T, rng)[:3].T
+        start += len(b.comp)
     count = n.sum(axis=1)
     if geom is not Cuboid:
         return pts, count
