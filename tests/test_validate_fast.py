@@ -430,32 +430,29 @@ def test_validation_is_deterministic_and_independent_of_earlier_checks(category)
 
 
 @pytest.mark.parametrize("category", CATEGORIES)
-def test_piece_tables_equal_their_plain_definitions(category):
-    """Boxes, flags and radial extents of every piece, against the per-piece
-    definitions (the templates' bounds, parameters and kinds)."""
+def test_piece_traits_hold_for_their_solids(category):
+    """Every piece's box holds its samples; its radial extent holds the radius of
+    every sample; symmetric pieces keep their SDF under a turn about their z axis;
+    whole balls have the SDF of a ball; boxes are exactly the Cuboid pieces."""
     from artipg.geometry.box import Cuboid
-    from artipg.geometry.revolve import Frustum, Ring, Sphere, Torus
 
+    rng = np.random.default_rng(13)
     for seed in SEEDS:
         _, pc = _pieces(artipg.generate(category, seed))
+        pc.require(np.arange(pc.n))
+        assert np.array_equal(pc.is_box, np.array([g is Cuboid for g in pc.geom]))
         for i in range(pc.n):
-            g = pc.geom[i]
-            p = pc.params[i, :len(g.params)]
-            b = g.bounds_batch(p[None])[0]
-            assert np.array_equal(pc.center[i], 0.5 * (b[0] + b[1])) and np.array_equal(pc.half[i], 0.5 * (b[1] - b[0]))
-            full = g in (Frustum, Sphere) or (g is Ring and p[3] >= 2 * np.pi - 1e-9) or \
-                (g is Torus and p[2] >= 2 * np.pi - 1e-9)
-            assert pc.is_box[i] == (g is Cuboid) and pc.symmetric[i] == full
-            assert pc.is_ball[i] == (g is Sphere and p[1] <= -p[0] and p[2] >= p[0])
-            rad = {Frustum: (0.0, max(p[0], p[1]) if g is Frustum else 0),
-                   Sphere: (0.0, p[0]), }.get(g)
-            if g is Ring:
-                rad = (min(p[1], p[1] + p[4]), max(p[0], p[0] + p[4]))
-            elif g is Torus:
-                rad = (p[0] - p[1], p[0] + p[1])
-            elif rad is None:
-                rad = (-np.inf, np.inf)
-            assert tuple(pc.radial[i]) == tuple(rad), (category, seed, i, g)
+            X = pc.samples(i)
+            assert (np.abs(X - pc.center[i]) <= pc.half[i] + 1e-9).all(), (category, seed, i)
+            rho = np.hypot(X[:, 0], X[:, 1])
+            assert ((rho >= pc.radial[i, 0] - 1e-9) & (rho <= pc.radial[i, 1] + 1e-9)).all(), (category, seed, i)
+            x = pc.center[i] + rng.normal(size=(200, 3)) * (pc.half[i] + 0.01)
+            d = pc.sdf(np.full(len(x), i), x)
+            if pc.symmetric[i]:
+                turned = x @ rotation(np.array([0.0, 0.0, 1.0]), rng.uniform(0, 2 * np.pi))[:3, :3].T
+                np.testing.assert_allclose(pc.sdf(np.full(len(x), i), turned), d, rtol=0, atol=1e-9)
+            if pc.is_ball[i]:
+                np.testing.assert_allclose(d, np.linalg.norm(x, axis=1) - pc.params[i, 0], rtol=0, atol=1e-12)
 
 
 @pytest.mark.parametrize("category", CATEGORIES)
