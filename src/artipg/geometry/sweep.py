@@ -138,6 +138,29 @@ class Sweep(Family):
         pts = np.array(pts)
         return np.stack([pts.min(axis=0), pts.max(axis=0)])
 
+    def collision(self, p):
+        """A cylinder per line piece; convex sectors of the tube circle per bend."""
+        from artipg.geometry.base import CollisionPiece
+        from artipg.geometry.profile import circle, polygonise
+        from artipg.geometry.revolve import sector_hulls
+
+        r = float(p[0])
+        pieces, _, _ = self.pieces(np.asarray(p, dtype=float)[None])
+        out = []
+        for kind, o, e1, e3, s0, L, R, arc in pieces:
+            T = np.eye(4)
+            T[:3, 0], T[:3, 2] = e1[:, 0], e3[:, 0]
+            T[:3, 1] = np.cross(e3[:, 0], e1[:, 0])
+            T[:3, 3] = o[:, 0]
+            if kind == "L":
+                T[:3, 3] += 0.5 * L[0] * e3[:, 0]
+                out.append(CollisionPiece("cylinder", (r, float(L[0])), T))
+            else:
+                poly = polygonise(circle(r, (float(R[0]), 0.0)), 16)
+                out += [CollisionPiece("mesh", pose=T @ c.pose, vertices=c.vertices, faces=c.faces)
+                        for c in sector_hulls(poly, float(arc[0]), float(R[0]) - r)]
+        return out
+
     def _tube(self, p):
         segs = tuple(("line", float(p[2 + 2 * i])) if k == "L" else ("arc", float(p[2 + 2 * i]), float(p[3 + 2 * i]))
                      for i, k in enumerate(self.key))
