@@ -117,7 +117,8 @@ class Lathe(Family):
         distance outside the wedge."""
         x = np.asarray(x, dtype=float)
         q = np.column_stack([np.hypot(x[:, 0], x[:, 1]), x[:, 2]])
-        d = profile.sdf([self.loop(p)], q)
+        loop = self.loop(p)
+        d = profile.sdf([loop], q, [_on_axis(loop)])
         return np.maximum(d, wedge_sdf(x, min(p[-3], TWO_PI)))
 
     def bounds(self, p):
@@ -175,7 +176,13 @@ class Lathe(Family):
         if arc < _FULL:
             th = np.where(th > 0.5 * (arc + TWO_PI), 0.0, np.minimum(th, arc))
         q = np.column_stack([np.hypot(x[:, 0], x[:, 1]), x[:, 2]])
-        return np.column_stack([th / arc, profile.loop_length_at(self.loop(p), q)])
+        loop = self.loop(p)
+        return np.column_stack([th / arc, profile.loop_length_at(loop, q, _on_axis(loop))])
+
+
+def _on_axis(loop) -> np.ndarray:
+    """Mask (n,) of the straight profile segments lying on the axis (no surface)."""
+    return (loop[:, 0] == 0.0) & (np.roll(loop[:, 0], -1) == 0.0) & (loop[:, 2] == 0.0)
 
 
 def moment(loop) -> float:

@@ -132,9 +132,10 @@ def at_length(loop, s: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return point_at(p0[i], p1[i], b[i], (s - cum[i]) / np.where(L > 0, L, 1.0))
 
 
-def _closest(loop, q: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+def _closest(loop, q: np.ndarray, skip=None) -> tuple[np.ndarray, np.ndarray]:
     """Distance (N,) from points q (N, 2) to a loop's curve and the arc length (N,) of
-    the closest curve point: (n, N) rows, one per segment."""
+    the closest curve point: (n, N) rows, one per segment; segments flagged in ``skip``
+    (n,) are left out (a lathe profile's segments on the axis are no surface)."""
     p0, p1, b = segments(loop)
     c, rad, a0, d = arc_geometry(p0, p1, b)
     P0, P1, B = p0[:, None], p1[:, None], b[:, None]
@@ -154,20 +155,23 @@ def _closest(loop, q: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     t = np.where(B == 0.0, t_line, t_arc)
     pt, _ = point_at(P0, P1, B, t)
     dist = np.linalg.norm(Q - pt, axis=-1)
+    if skip is not None:
+        dist[np.asarray(skip, dtype=bool)] = np.inf
     k = dist.argmin(axis=0)
     cols = np.arange(len(q))
     cum = perimeter(loop)
     return dist[k, cols], cum[k] + t[k, cols] * (cum[k + 1] - cum[k])
 
 
-def loop_distance(loop, q: np.ndarray) -> np.ndarray:
-    """Unsigned distance (N,) from points ``q`` (N, 2) to a loop's curve."""
-    return _closest(np.asarray(loop, dtype=float), np.asarray(q, dtype=float))[0]
+def loop_distance(loop, q: np.ndarray, skip=None) -> np.ndarray:
+    """Unsigned distance (N,) from points ``q`` (N, 2) to a loop's curve (without the
+    segments flagged in ``skip`` (n,))."""
+    return _closest(np.asarray(loop, dtype=float), np.asarray(q, dtype=float), skip)[0]
 
 
-def loop_length_at(loop, q: np.ndarray) -> np.ndarray:
+def loop_length_at(loop, q: np.ndarray, skip=None) -> np.ndarray:
     """Arc length (N,) of the loop point closest to each of ``q`` (N, 2)."""
-    return _closest(np.asarray(loop, dtype=float), np.asarray(q, dtype=float))[1]
+    return _closest(np.asarray(loop, dtype=float), np.asarray(q, dtype=float), skip)[1]
 
 
 def loop_parity(loop, q: np.ndarray) -> np.ndarray:
@@ -204,10 +208,12 @@ def inside(loops, q) -> np.ndarray:
     return out
 
 
-def sdf(loops, q) -> np.ndarray:
-    """Exact signed distance (N,) of points ``q`` (N, 2) to an outline: negative inside."""
+def sdf(loops, q, skips=None) -> np.ndarray:
+    """Exact signed distance (N,) of points ``q`` (N, 2) to an outline: negative inside.
+    ``skips`` (one (n,) mask per loop, optional) leaves segments out of the distance."""
     q = np.asarray(q, dtype=float)
-    d = np.min([loop_distance(l, q) for l in loops], axis=0)
+    skips = [None] * len(loops) if skips is None else skips
+    d = np.min([loop_distance(l, q, s) for l, s in zip(loops, skips)], axis=0)
     return np.where(inside(loops, q), -d, d)
 
 
