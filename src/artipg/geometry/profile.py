@@ -195,6 +195,11 @@ def loop_parity(loop, q: np.ndarray) -> np.ndarray:
         side = chord_side(p0[arcs][:, None], p1[arcs][:, None], q[None])
         # a counter-clockwise arc (b > 0) bulges to the right of its chord
         arc_side = np.where(b[arcs][:, None] > 0, side < 0, side > 0)
+        # points on a chord's line count for one of a pair of opposite chords (the two
+        # half circles of a circle): those whose chord points along +x (or +y)
+        ch = p1[arcs] - p0[arcs]
+        first = (ch[:, 0] > 0) | ((ch[:, 0] == 0) & (ch[:, 1] > 0))
+        arc_side |= (side == 0) & first[:, None]
         par ^= ((in_disc & arc_side).sum(axis=0) % 2) == 1
     return par
 
