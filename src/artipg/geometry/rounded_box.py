@@ -129,6 +129,8 @@ class RoundedBox(Family):
         m = max(1, sections // 8) if r > 0 else 1
         tn = np.tan(np.linspace(0.0, math.pi / 4, m + 1))
         grids = [np.concatenate([-(inner[a] + r * tn[::-1]), inner[a] + r * tn]) for a in range(3)]
+        for a in range(3):  # tan(π/4) rounds below 1: the faces must meet at the same ends
+            grids[a][0], grids[a][-1] = -half[a], half[a]
         Vs, Fs, base = [], [], 0
         for k, i, j in _CYC:
             gi, gj = grids[i], grids[j]
@@ -148,7 +150,7 @@ class RoundedBox(Family):
         d = V - c
         nrm = np.linalg.norm(d, axis=1, keepdims=True)
         V = np.where(nrm > 0, c + r * d / np.where(nrm > 0, nrm, 1.0), V) + 0.0
-        return weld(np.round(V, 15) + 0.0, np.concatenate(Fs))
+        return weld(V, np.concatenate(Fs))
 
     def collision(self, p):
         if p[3] == 0:
