@@ -91,7 +91,7 @@ def test_family_mesh_sampling_sdf(case):
     g, p = prim.geom, np.asarray(prim.params)
     L = _scale(prim)
     rng = np.random.default_rng(7)
-    m = g.mesh(p, 128)
+    m = g.mesh(p, 96)
     assert m.is_watertight and m.is_winding_consistent and m.volume > 0
     area = float(g.area(p[None])[0])
     # the open joints (on = 0) are left out of the area; the mesh is the closed solid
@@ -130,9 +130,9 @@ def test_family_mesh_sampling_sdf(case):
     far = np.abs(d) > 3e-3 * L
     assert (m.contains(Q[far]) == (d[far] < 0)).mean() > 0.995
     # |sdf| against the distance to a dense surface sample
-    S, _ = g.sample_many(_all_on(g, p) if g.kind == "lathe" else p, 40000, rng)
+    S, _ = g.sample_many(_all_on(g, p) if g.kind == "lathe" else p, 30000, rng)
     near = cKDTree(S).query(Q)[0]
-    spacing = math.sqrt(closed / 40000) * 3
+    spacing = math.sqrt(closed / 30000) * 3
     if exact != "sign":  # exact, or a lower bound of the distance
         assert (np.abs(d) <= near + 1e-9 * L).all()
     if exact is True:
@@ -165,21 +165,40 @@ def test_sampling_is_deterministic():
 
 
 def test_revolved_cells_are_area_uniform_along_the_segment():
-    """The inverse CDF of an arc cell: the fraction of points below a profile angle
-    matches the area fraction there (a planted uniform-in-angle sampler fails)."""
-    q = np.zeros((15, 20000))
+    """The inverse CDF of an arc cell: the share of points on the first half (by angle)
+    of the arc is that half's share of the area, far from the 1/2 that a sampler
+    uniform in the angle would give (the planted fault this catches)."""
+    seg = np.array([0.3, 0.0, 0.1, 0.2, 0.4])  # (0.3, 0) -> (0.1, 0.2), bulge 0.4
+    q = np.zeros((15, 40000))
     q[3], q[8] = 1.0, 1.0  # e1 = x, e3 = z
-    q[9:14] = np.array([0.3, 0.0, 0.1, 0.2, 0.4])[:, None]  # (0.3, 0) -> (0.1, 0.2), bulge 0.4
+    q[9:14] = seg[:, None]
     q[14] = TWO_PI
-    u, v = np.random.default_rng(0).random((2, 20000))
-    P = place_revolved(q, u, v)
-    rho = np.hypot(P[0], P[1])
-    # the area between the start and ρ = 0.2 ... measured by the same cell split at the median u
-    half = place_revolved(q[:, :1], np.array([0.5]), np.array([0.0]))
-    r_mid = float(np.hypot(half[0, 0], half[1, 0]))
-    assert abs(np.mean(rho > r_mid) - 0.5) < 0.015
-    # and a sampler uniform in the arc's angle would put far fewer points at large ρ
-    assert revolved_area(0.3, 0.0, 0.1, 0.2, 0.4, TWO_PI) > 0
+    u, v = np.random.default_rng(0).random((2, 40000))
+    X = place_revolved(q, u, v)
+    c, R, a0, d = profile.arc_geometry(seg[None, 0:2], seg[None, 2:4], seg[None, 4])
+    rho_z = np.stack([np.hypot(X[0], X[1]), X[2]], axis=1)
+    ang = np.arctan2(rho_z[:, 1] - c[0, 1], rho_z[:, 0] - c[0, 0])
+    first = np.mod((ang - a0[0]) * np.sign(d[0]), TWO_PI) < abs(d[0]) / 2
+    mid = profile.point_at(seg[None, 0:2], seg[None, 2:4], seg[None, 4], np.array([0.5]))[0][0]
+    share = revolved_area(seg[0], seg[1], mid[0], mid[1], math.tan(d[0] / 8), TWO_PI) / revolved_area(*seg, TWO_PI)
+    assert abs(share - 0.5) > 0.05
+    assert abs(first.mean() - share) < 0.01
+    # every point is on the arc, with the outward (away from the centre) normal
+    assert np.allclose(np.hypot(rho_z[:, 0] - c[0, 0], rho_z[:, 1] - c[0, 1]), R[0])
+
+
+def test_rows_of_one_family_sample_their_own_surfaces():
+    """``sample(P, rng)``: one point per row of differing parameters, each on its row."""
+    rng = np.random.default_rng(4)
+    for make in (lambda: la.ring(rng.uniform(0.2, 0.3), 0.15, 0.2, arc=rng.uniform(1, 6)),
+                 lambda: ex.extrusion([profile.rectangle(0.3, 0.2, rng.uniform(0.01, 0.05))], 0.05),
+                 lambda: rounded_box(*rng.uniform(0.1, 0.3, 3), r=0.02)):
+        prims = [make() for _ in range(300)]
+        g = prims[0].geom
+        P = np.array([q.params for q in prims])
+        X, N = g.sample(P, rng)
+        d = np.array([g.sdf(p, x[None])[0] for p, x in zip(P, X)])
+        assert np.abs(d).max() < 1e-12
 
 
 @pytest.mark.parametrize("seed", [0, 1, 2])

@@ -24,7 +24,7 @@ import numpy as np
 
 from artipg.geometry import profile
 from artipg.geometry.base import CollisionPiece, Primitive, convex_hull
-from artipg.geometry.family import Family, Region, convex_pieces, rejection_region, triangulate, weld
+from artipg.geometry.family import Family, Region, convex_pieces, rejection_region, row_triangles, triangulate, weld
 from artipg.geometry.patches import block
 from artipg.geometry.revolved import cells
 from artipg.geometry.transforms import IDENTITY
@@ -98,9 +98,8 @@ class Extrusion(Family):
         return out
 
     def _cap_tris(self, P):
-        Ts = [triangulate([l[:, :2] for l in self.loops(p)]) for p in P]
-        t = max(len(x) for x in Ts)
-        T = np.stack([np.concatenate([x, np.zeros((t - len(x), 3), dtype=np.int64)]) for x in Ts])
+        T = row_triangles(P[:, :-2], lambda row: [l[:, :2] for l in self.loops(np.append(row, (0.0, 0.0)))])
+        t = T.shape[1]
         V = np.concatenate([l[..., :2] for l in _loop_arrays(self.key, P)], axis=1)  # (M, v, 2)
         rows = np.arange(len(P))[:, None]
         A, B, C = (V[rows, T[:, :, j]].transpose(1, 0, 2) for j in range(3))

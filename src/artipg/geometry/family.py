@@ -119,8 +119,27 @@ class Family(GeometryTemplate):
         return out[:3].T, out[3:].T
 
     def sample_many(self, p, k: int, rng) -> tuple[np.ndarray, np.ndarray]:
-        """``k`` area-uniform points (k, 3) and outward normals (k, 3) of one row ``p``."""
-        return self.sample(np.repeat(np.asarray(p, dtype=float)[None], k, axis=0), rng)
+        """``k`` area-uniform points (k, 3) and outward normals (k, 3) of one row ``p``:
+        the cells of the row are made once, each point picks one by area."""
+        P = np.asarray(p, dtype=float)[None]
+        blocks, regions = self.patches(P), self.regions(P)
+        area = np.concatenate([b.area[:, 0] for b in blocks] + [r.area for r in regions])
+        cum = np.cumsum(area)
+        which = np.minimum(np.searchsorted(cum, rng.random(k) * cum[-1], side="right"), len(area) - 1)
+        out = np.empty((6, k))
+        start = 0
+        for b in blocks:
+            sel = np.flatnonzero((which >= start) & (which < start + len(b.comp)))
+            if len(sel):
+                u, v = rng.random((2, len(sel)))
+                out[:, sel] = place_cells(b.family, b.params[which[sel] - start, :, 0].T, u, v)
+            start += len(b.comp)
+        for r in regions:
+            sel = np.flatnonzero(which == start)
+            if len(sel):
+                out[:, sel] = r.draw(P[0], len(sel), rng)
+            start += 1
+        return out[:3].T, out[3:].T
 
     def bounds_batch(self, P):
         return np.stack([self.bounds(p) for p in P]) if len(P) else np.zeros((0, 2, 3))
@@ -166,6 +185,18 @@ def triangulate(rings: list[np.ndarray]) -> np.ndarray:
     cw = (b[:, 0] - a[:, 0]) * (c[:, 1] - a[:, 1]) - (b[:, 1] - a[:, 1]) * (c[:, 0] - a[:, 0]) < 0
     T[cw] = T[cw][:, ::-1]
     return T
+
+
+def row_triangles(P: np.ndarray, rings_of) -> np.ndarray:
+    """Triangles (M, t, 3) of the polygon ``rings_of(p)`` of every row of ``P`` (M, p),
+    triangulated once per distinct row and padded with degenerate (0, 0, 0) triangles
+    to the largest count (n - 2 for a simple n-gon; fewer if earcut drops degenerate
+    ones)."""
+    U, inv = np.unique(P, axis=0, return_inverse=True)
+    Ts = [triangulate(rings_of(p)) for p in U]
+    t = max(len(x) for x in Ts)
+    T = np.stack([np.concatenate([x, np.zeros((t - len(x), 3), dtype=np.int64)]) for x in Ts])
+    return T[inv.reshape(-1)]
 
 
 def convex_pieces(rings: list[np.ndarray]) -> list[np.ndarray]:

@@ -23,7 +23,7 @@ import numpy as np
 
 from artipg.geometry import profile
 from artipg.geometry.base import TWO_PI, CollisionPiece, Primitive, convex_hull, wedge_sdf
-from artipg.geometry.family import Family, Region, convex_pieces, rejection_region, triangulate, weld
+from artipg.geometry.family import Family, Region, convex_pieces, rejection_region, row_triangles, triangulate, weld
 from artipg.geometry.patches import tris
 from artipg.geometry.revolve import _arc_bounds, revolve_arrays, sector_hulls
 from artipg.geometry.revolved import cells
@@ -70,9 +70,8 @@ class Lathe(Family):
 
     def _end_tris(self, V, arc, caps):
         """The flat ends of partial turns of polygonal profiles as triangles (comps n, n+1)."""
-        Ts = [triangulate([v[:, :2]]) for v in V]  # n - 2 per row, fewer if degenerate
-        t = max(len(x) for x in Ts)
-        T = np.stack([np.concatenate([x, np.zeros((t - len(x), 3), dtype=np.int64)]) for x in Ts])
+        n = self.key
+        T = row_triangles(V.reshape(len(V), -1), lambda row: [row.reshape(n, 4)[:, :2]])
         part = (arc < _FULL).astype(float)
         A, B, C = (V[np.arange(len(V))[:, None], T[:, :, k], :2].transpose(1, 0, 2) for k in range(3))
         out = []
