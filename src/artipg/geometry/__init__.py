@@ -15,3 +15,12 @@ __all__ = [
     "cuboid", "cuboid_between", "rect_ring", "cylinder", "frustum", "ring", "sphere", "torus",
     "prism", "tri_prism", "tube", "line", "arc",
 ]
+
+# The general families (docs/extending.md, "Geometry families"); their thin constructors
+# (lathe.frustum, extrusion.prism, ...) stay in their modules until the categories switch.
+from artipg.geometry.extrusion import Extrusion, extrusion  # noqa: E402
+from artipg.geometry.lathe import Lathe, lathe  # noqa: E402
+from artipg.geometry.rounded_box import RoundedBox, rounded_box  # noqa: E402
+from artipg.geometry.sweep import Sweep, sweep  # noqa: E402
+
+__all__ += ["Extrusion", "Lathe", "RoundedBox", "Sweep", "extrusion", "lathe", "rounded_box", "sweep"]
