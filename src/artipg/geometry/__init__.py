@@ -16,11 +16,13 @@ __all__ = [
     "prism", "tri_prism", "tube", "line", "arc",
 ]
 
-# The general families (docs/extending.md, "Geometry families"); their thin constructors
-# (lathe.frustum, extrusion.prism, ...) stay in their modules until the categories switch.
-from artipg.geometry.extrusion import Extrusion, extrusion  # noqa: E402
-from artipg.geometry.lathe import Lathe, lathe  # noqa: E402
-from artipg.geometry.rounded_box import RoundedBox, rounded_box  # noqa: E402
-from artipg.geometry.sweep import Sweep, sweep  # noqa: E402
+# The general families (docs/extending.md, "Geometry families"), exported as modules
+# (their constructors share names with them: lathe.lathe, extrusion.prism, ...); the
+# thin constructors replace today's templates when the categories switch.
+from artipg.geometry import extrusion, lathe, profile, rounded_box, sweep  # noqa: E402
+from artipg.geometry.extrusion import Extrusion  # noqa: E402
+from artipg.geometry.lathe import Lathe  # noqa: E402
+from artipg.geometry.rounded_box import RoundedBox  # noqa: E402
+from artipg.geometry.sweep import Sweep  # noqa: E402
 
-__all__ += ["Extrusion", "Lathe", "RoundedBox", "Sweep", "extrusion", "lathe", "rounded_box", "sweep"]
+__all__ += ["Extrusion", "Lathe", "RoundedBox", "Sweep", "extrusion", "lathe", "profile", "rounded_box", "sweep"]

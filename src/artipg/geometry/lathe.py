@@ -11,6 +11,10 @@ gives a solid, one that does not a hollow (ring-like) solid; segments on the axi
 no area. ``on = 0`` segments and ends are open joints (the inside of a swept tube):
 the solid (SDF, mesh, volume) stays closed, only sampling and area leave them out.
 
+The flat ends of partial turns are triangle cells for polygonal profiles, disc
+(sector) cells for circle profiles (the torus), and regions sampled by rejection for
+other profiles with arcs (:mod:`artipg.geometry.family`).
+
 Thin constructors :func:`cylinder`, :func:`frustum`, :func:`ring`, :func:`sphere` and
 :func:`torus` give today's :mod:`artipg.geometry.revolve` templates as lathe primitives.
 """
@@ -24,7 +28,7 @@ import numpy as np
 from artipg.geometry import profile
 from artipg.geometry.base import TWO_PI, CollisionPiece, Primitive, convex_hull, wedge_sdf
 from artipg.geometry.family import Family, Region, convex_pieces, rejection_region, row_triangles, triangulate, weld
-from artipg.geometry.patches import tris
+from artipg.geometry.patches import sectors, tris
 from artipg.geometry.revolve import _arc_bounds, revolve_arrays, sector_hulls
 from artipg.geometry.revolved import cells
 from artipg.geometry.transforms import IDENTITY
@@ -66,7 +70,28 @@ class Lathe(Family):
         out = [walls]
         if not (V[..., 2] != 0).any() and (arc < _FULL).any():
             out += self._end_tris(V, arc, caps)
+        circ = self._circles(V)
+        if circ.any() and (arc < _FULL).any():
+            out.append(self._end_discs(V, arc, caps * (circ * (arc < _FULL))[:, None]))
         return out
+
+    def _circles(self, V) -> np.ndarray:
+        """(M,) 1.0 where the profile is a circle (two half circles: a torus): its ends
+        are discs, sector cells, instead of rejection-sampled regions."""
+        if self.key != 2:
+            return np.zeros(len(V))
+        return ((V[:, 0, 2] == 1.0) & (V[:, 1, 2] == 1.0)).astype(float)
+
+    def _end_discs(self, V, arc, on):
+        """The disc ends (comps n, n+1) of circle profiles, switched on by ``on`` (M, 2)."""
+        centre = 0.5 * (V[:, 0, :2] + V[:, 1, :2])
+        rad = 0.5 * np.hypot(*(V[:, 0, :2] - V[:, 1, :2]).T)
+        ends = np.stack([np.zeros_like(arc), arc])
+        ce, se = np.cos(ends), np.sin(ends)
+        sg = np.array([[-1.0], [1.0]])  # the θ = 0 end faces -θ, the θ = arc end +θ
+        rho, z = centre[:, 0], centre[:, 1]
+        return sectors(np.array([self.key, self.key + 1]), (rho * ce, rho * se, z), (ce, se, 0.0), (0.0, 0.0, 1.0),
+                       (-se * sg, ce * sg, 0.0), 0.0, rad, TWO_PI, scale=on.T)
 
     def _end_tris(self, V, arc, caps):
         """The flat ends of partial turns of polygonal profiles as triangles (comps n, n+1)."""
@@ -92,7 +117,7 @@ class Lathe(Family):
         V, arc, caps = self._split(P)
         if not (V[..., 2] != 0).any() or not (arc < _FULL).any():
             return []
-        area = np.abs(profile.loop_area(V[..., :3])) * (arc < _FULL)
+        area = np.abs(profile.loop_area(V[..., :3])) * (arc < _FULL) * (1.0 - self._circles(V))
         out = []
         for e in (0, 1):
             def ang(p, e=e):
