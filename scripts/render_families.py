@@ -38,10 +38,13 @@ def _scene():
                       ex.extrusion(outlines.plier_half(0.18, 0.07, 0.04, 0.012), 0.015, pose=translation(0.0, 0.05, 0)),
                       ex.extrusion([profile.rectangle(0.2, 0.12, 0.02), profile.rectangle(0.12, 0.05)], 0.03,
                                    pose=translation(0.0, 0.3, 0)),
-                      ex.extrusion([profile.regular_polygon(0.07, 6)], 0.12, scale=0.5, pose=translation(0.3, -0.1, 0))],
-        "rounded_box": [rounded_box(0.3, 0.2, 0.12, 0.03), rounded_box(0.12, 0.12, 0.12, 0.06, pose=translation(0.3, 0.1, 0)),
+                      ex.extrusion([profile.regular_polygon(0.07, 6)], 0.12, scale=0.5,
+                                   pose=translation(0.3, -0.1, 0))],
+        "rounded_box": [rounded_box(0.3, 0.2, 0.12, 0.03),
+                        rounded_box(0.12, 0.12, 0.12, 0.06, pose=translation(0.3, 0.1, 0)),
                         rounded_box(0.1, 0.25, 0.05, pose=translation(-0.3, 0.0, 0))],
-        "sweep": [sweep(0.012, [line(0.1), arc(0.06, 1.6), line(0.12), arc(0.06, 1.6), line(0.1)]),
+        "sweep": [sweep(0.012, [line(0.1), arc(0.06, 1.6), line(0.12), arc(0.06, 1.6),
+                                line(0.1)]),
                   sweep(0.02, [arc(0.12, math.pi)], heading=math.pi / 2, pose=translation(0.3, 0, 0))],
     }
 

@@ -74,7 +74,7 @@ class Extrusion(Family):
         c = len(b)
         comp = np.arange(c)
         straight = (b == 0).astype(float)
-        z0, z1 = -h / 2, h / 2
+        z0 = -h / 2
         # side trapezoid A B C D = (p0, z0) (p1, z0) (k p1, z1) (k p0, z1) as triangles ABC, ACD
         A = (p0[..., 0], p0[..., 1], z0)
         AB = (p1[..., 0] - p0[..., 0], p1[..., 1] - p0[..., 1], 0.0 * z0)
