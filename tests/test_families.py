@@ -139,7 +139,8 @@ def test_family_mesh_sampling_sdf(case):
         assert np.abs(np.abs(d) - near).max() < spacing
     # UVs in range
     uv = g.uv(p, X, N)
-    assert np.isfinite(uv).all() and (uv >= -1e-9).all()
+    ub = g.uv_bounds(p)
+    assert np.isfinite(uv).all() and (uv >= ub[0] - 1e-9 * L).all() and (uv <= ub[1] + 1e-9 * L).all()
 
 
 def _all_on(g, p):
@@ -174,6 +175,17 @@ def test_collision_pieces_are_convex_and_fill_the_solid(case):
     if all(q.shape == "mesh" for q in g.collision(p)):
         # hulls of polygonised profiles (24 sections a turn): within a few per cent
         assert vol == pytest.approx(g.volume(p), rel=0.06)
+
+
+def test_family_instances_are_shared_and_pickle_to_themselves():
+    import pickle
+
+    a, b = la.cylinder(0.1, 0.2), la.ring(0.3, 0.2, 0.1)
+    assert a.geom is b.geom and pickle.loads(pickle.dumps(a.geom)) is a.geom
+    assert ex.prism(0.1, 0.1, 5).geom is not ex.prism(0.1, 0.1, 6).geom
+    # a Primitive of a family answers as one of a template
+    assert a.area() == pytest.approx(Frustum.area(np.array([[0.1, 0.1, 0.2, 1.0, 1.0]]))[0], rel=1e-12)
+    assert a.mesh(32).is_watertight and a.bounds().shape == (2, 3) and a.sdf(np.zeros((1, 3)))[0] < 0
 
 
 def test_sampling_is_deterministic():

@@ -190,6 +190,12 @@ class Extrusion(Family):
             out.append(CollisionPiece("mesh", vertices=V, faces=F))
         return out
 
+    def uv_bounds(self, p):
+        loops = self.loops(p)
+        b = profile.bounds(loops[0])
+        total = sum(profile.perimeter(l)[-1] for l in loops)
+        return np.array([[0.0, 0.0], [max(total, b[1, 0] - b[0, 0]), max(float(p[-2]), b[1, 1] - b[0, 1])]])
+
     def uv(self, p, x, n):
         """Sides: u = arc length (m) along the closest loop (holes continue after the
         outer loop's perimeter), v = z + h/2 (m). Caps (|nz| > 0.999 on a straight

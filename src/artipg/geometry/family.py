@@ -71,6 +71,10 @@ class Family(GeometryTemplate):
         """Texture coordinates (N, 2) of surface points ``x`` with normals ``n`` (N, 3)."""
         raise NotImplementedError
 
+    def uv_bounds(self, p) -> np.ndarray:  # pragma: no cover - abstract
+        """Range (2, 2) of :meth:`uv` on the surface of row ``p``: [[u_lo, v_lo], [u_hi, v_hi]]."""
+        raise NotImplementedError
+
     # ------------------------------------------------------------ shared
     def component_areas(self, P) -> np.ndarray:
         P = np.atleast_2d(np.asarray(P, dtype=float))

@@ -191,6 +191,9 @@ class Lathe(Family):
                 out += sector_hulls(piece, arc, piece[:, 0].min())
         return out
 
+    def uv_bounds(self, p):
+        return np.array([[0.0, 0.0], [1.0, profile.perimeter(self.loop(p))[-1]]])
+
     def uv(self, p, x, n=None):
         """u = θ / arc in [0, 1], v = arc length (m) along the profile of the closest
         profile point, in [0, perimeter]."""

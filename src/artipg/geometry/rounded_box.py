@@ -157,6 +157,9 @@ class RoundedBox(Family):
             return [CollisionPiece("box", tuple(float(v) for v in p[:3]))]
         return super().collision(p)
 
+    def uv_bounds(self, p):
+        return np.array([[0.0, 0.0], [max(p[:3]), max(p[:3])]])
+
     def uv(self, p, x, n):
         """Per face, planar (m): the two coordinates other than the normal's dominant
         axis k, in cyclic order (k, i, j), offset by the half extents: u in [0, s_i]."""

@@ -180,6 +180,9 @@ class Sweep(Family):
         return float(sum(abs(p[2 + 2 * i]) if k == "L" else p[2 + 2 * i] * abs(p[3 + 2 * i])
                          for i, k in enumerate(self.key)))
 
+    def uv_bounds(self, p):
+        return np.array([[0.0, 0.0], [self.length(p), 1.0]])
+
     def uv(self, p, x, n=None):
         """u = arc length (m) of the closest centre-line point, in [0, length]; v = the
         angle around the centre line / 2π, in [0, 1) (0 on the +y side)."""
