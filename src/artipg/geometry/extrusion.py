@@ -85,6 +85,8 @@ class Extrusion(Family):
         nn = np.where(nn > 0, nn, 1.0)
         N = (nx / nn, ny / nn, nz / nn)
         out = [_tris(comp, A, AB, AC, N, straight), _tris(comp, A, AC, AD, N, straight)]
+        if not (b != 0).any():
+            return out + self._cap_tris(P)
         # arc sides: the vertical segment at the arc's radius revolved about its centre
         cen, R, a0, d = profile.arc_geometry(p0, p1, b)
         Rf = np.where(np.isfinite(R), R, 0.0)
@@ -93,8 +95,6 @@ class Extrusion(Family):
         e1 = (np.cos(start), np.sin(start), 0.0)
         out.append(cells(comp, (cen[..., 0], cen[..., 1], z0), e1, (0.0, 0.0, 1.0), Rf,
                          np.where(pos, 0.0, h), Rf, np.where(pos, h, 0.0), 0.0, np.abs(d), scale=1.0 - straight))
-        if not (b != 0).any():
-            out += self._cap_tris(P)
         return out
 
     def _cap_tris(self, P):

@@ -53,8 +53,10 @@ def _segment_terms(r0, z0, r1, z1, b):
 
 def revolved_area(r0, z0, r1, z1, b, arc) -> np.ndarray:
     """Area (...) of revolved segments (Pappus for lines; ∫ ρ ds over the arc), m^2."""
-    straight, c, R, a0, d, H1 = _segment_terms(*np.broadcast_arrays(r0, z0, r1, z1, b))
     line = 0.5 * (np.asarray(r0) + r1) * np.hypot(np.asarray(r1) - r0, np.asarray(z1) - z0)
+    if not np.any(b):  # straight segments only: no arc terms
+        return arc * line
+    straight, c, R, a0, d, H1 = _segment_terms(*np.broadcast_arrays(r0, z0, r1, z1, b))
     return arc * np.where(straight, line, R * np.abs(H1))
 
 

@@ -18,8 +18,8 @@ import numpy as np
 
 from artipg.geometry.base import CollisionPiece, Primitive
 from artipg.geometry.family import Family, weld
-from artipg.geometry.patches import rects
-from artipg.geometry.revolved import cells
+from artipg.geometry.patches import compile_linear, linear, rects
+from artipg.geometry.revolved import NAME, cells
 from artipg.geometry.transforms import IDENTITY
 
 _CYC = ((0, 1, 2), (1, 2, 0), (2, 0, 1))  # (k, i, j) with e_i x e_j = e_k
@@ -72,27 +72,16 @@ class RoundedBox(Family):
         return 8
 
     def patches(self, P):
+        # every cell parameter is affine in (sx, sy, sz, r): one matrix product per block
+        # (tables compiled once from :func:`_blocks`, the definition); areas in closed form
         P = np.atleast_2d(np.asarray(P, dtype=float))
-        half, r = P[:, :3].T / 2, P[:, 3]  # (3, M), (M,)
-        inner = half - r
-        out = []
-        for f in range(6):
-            k, sg = f // 2, (f % 2) * 2.0 - 1.0
-            _, i, j = _CYC[k]
-            o, a, b, n = [np.zeros((3, len(P))) for _ in range(4)]
-            o[k], o[i], o[j] = sg * half[k], -inner[i], -inner[j]
-            a[i], b[j], n[k] = 2 * inner[i], 2 * inner[j], sg
-            out.append(rects([f], tuple(o[:, None]), tuple(a[:, None]), tuple(b[:, None]), tuple(n[:, None])))
-        # edges: a segment (r, 0) -> (r, edge length) revolved a quarter turn
-        O = _EO.T[:, :, None] * inner[:, None, :]  # (3, 12, M)
-        L = 2 * inner[_EK]  # (12, M)
-        out.append(cells(np.full(12, 6), tuple(O), tuple(_EE1.T[:, :, None]), tuple(_EE3.T[:, :, None]),
-                         r, 0.0, r, L, 0.0, 0.5 * math.pi))
-        # corners: the quarter arc (r, 0) -> (0, r) revolved a quarter turn
-        O = _CO.T[:, :, None] * inner[:, None, :]
-        out.append(cells(np.full(8, 7), tuple(O), tuple(_CE1.T[:, :, None]), tuple(_CE3.T[:, :, None]),
-                         r, 0.0, 0.0, r, _QUARTER_BULGE, 0.5 * math.pi))
-        return out
+        A = self.component_areas(P).T  # (8, M)
+        r = P[:, 3]
+        edge = (0.5 * math.pi) * r * (P[:, :3] - 2 * r[:, None]).T[_EK]
+        corner = np.broadcast_to((0.5 * math.pi) * r * r, (8, len(P)))
+        return [linear("rect", _FACE_COMP, P, _TABLES[0], A[:6]),
+                linear(NAME, _EDGE_COMP, P, _TABLES[1], edge),
+                linear(NAME, _CORNER_COMP, P, _TABLES[2], corner)]
 
     def component_areas(self, P):
         P = np.atleast_2d(np.asarray(P, dtype=float))
@@ -169,6 +158,32 @@ class RoundedBox(Family):
         i, j = (k + 1) % 3, (k + 2) % 3
         rows = np.arange(len(x))
         return np.column_stack([x[rows, i] + half[i], x[rows, j] + half[j]])
+
+
+def _blocks(P):
+    """The cells of rows ``P`` (M, 4): six face rects (shrunk by r), twelve quarter
+    cylinders (a segment (r, 0) -> (r, edge length) revolved a quarter turn) and eight
+    sphere octants (the quarter arc (r, 0) -> (0, r) revolved a quarter turn)."""
+    half, r = P[:, :3].T / 2, P[:, 3]  # (3, M), (M,)
+    inner = half - r
+    o, a, b, n = [np.zeros((3, 6, len(P))) for _ in range(4)]
+    for f in range(6):
+        k, sg = f // 2, (f % 2) * 2.0 - 1.0
+        _, i, j = _CYC[k]
+        o[k, f], o[i, f], o[j, f] = sg * half[k], -inner[i], -inner[j]
+        a[i, f], b[j, f], n[k, f] = 2 * inner[i], 2 * inner[j], sg
+    faces = rects(_FACE_COMP, tuple(o), tuple(a), tuple(b), tuple(n))
+    O = _EO.T[:, :, None] * inner[:, None, :]  # (3, 12, M)
+    edges = cells(_EDGE_COMP, tuple(O), tuple(_EE1.T[:, :, None]), tuple(_EE3.T[:, :, None]),
+                  r, 0.0, r, 2 * inner[_EK], 0.0, 0.5 * math.pi)
+    O = _CO.T[:, :, None] * inner[:, None, :]
+    corners = cells(_CORNER_COMP, tuple(O), tuple(_CE1.T[:, :, None]), tuple(_CE3.T[:, :, None]),
+                    r, 0.0, 0.0, r, _QUARTER_BULGE, 0.5 * math.pi)
+    return faces, edges, corners
+
+
+_FACE_COMP, _EDGE_COMP, _CORNER_COMP = np.arange(6), np.full(12, 6), np.full(8, 7)
+_TABLES = [compile_linear(lambda P, i=i: _blocks(P)[i], 4) for i in range(3)]
 
 
 def rounded_box(sx: float, sy: float, sz: float, r: float = 0.0, pose: np.ndarray = IDENTITY,
