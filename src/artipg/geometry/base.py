@@ -55,11 +55,7 @@ class GeometryTemplate:
     @classmethod
     def patches(cls, P: np.ndarray) -> list:  # pragma: no cover - abstract
         """The surface as :class:`artipg.geometry.patches.Patch` blocks, for rows of ``P``
-        (M, p); patch areas of component c sum to ``component_areas(P)[:, c]``.
-
-        The templates of :data:`artipg.geometry.kernels.CODES` have a compiled twin of
-        this and of :meth:`bounds_batch` there, which objects use: change both
-        (tests/test_framework_fast.py compares them bit for bit)."""
+        (M, p); patch areas of component c sum to ``component_areas(P)[:, c]``."""
         raise NotImplementedError
 
     @classmethod
