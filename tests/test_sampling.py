@@ -123,3 +123,15 @@ def test_table_boxes_enclose_the_sampled_points(category):
     assert ((pc.points >= boxes[:, 0] - tol) & (pc.points <= boxes[:, 1] + tol)).all()
     lo, hi = table.bounds(poses)
     assert (pc.points >= lo - tol).all() and (pc.points <= hi + tol).all()
+
+
+def test_templates_are_known_by_their_name_and_unknown_names_fail():
+    from artipg.geometry import GEOMETRY_TEMPLATES
+    from artipg.geometry.base import GeometryTemplate, template_named
+
+    for name, geom in GEOMETRY_TEMPLATES.items():
+        assert template_named(name) is geom and geom.name == name
+    with pytest.raises(KeyError, match="unknown geometry template 'blob'"):
+        template_named("blob")
+    with pytest.raises(ValueError, match="is taken"):
+        type("Impostor", (GeometryTemplate,), {"name": "cuboid"})
