@@ -22,7 +22,7 @@ from typing import Callable, ClassVar, NamedTuple
 import numpy as np
 
 from artipg.geometry.base import GeometryTemplate, convex_hull, pick
-from artipg.geometry.revolved import place_cells
+from artipg.geometry.patches import sample_family
 
 
 class Region(NamedTuple):
@@ -108,8 +108,7 @@ class Family(GeometryTemplate):
         for b in blocks:
             sel = np.flatnonzero((which >= start) & (which < start + len(b.comp)))
             if len(sel):
-                u, v = rng.random((2, len(sel)))
-                out[:, sel] = place_cells(b.family, b.params[which[sel] - start, :, sel].T, u, v)
+                out[:, sel] = sample_family(b.family, b.params[which[sel] - start, :, sel].T, rng)
             start += len(b.comp)
         for r in regions:
             sel = np.flatnonzero(which == start)
@@ -135,8 +134,7 @@ class Family(GeometryTemplate):
         for b in blocks:
             sel = np.flatnonzero((which >= start) & (which < start + len(b.comp)))
             if len(sel):
-                u, v = rng.random((2, len(sel)))
-                out[:, sel] = place_cells(b.family, b.params[which[sel] - start, :, 0].T, u, v)
+                out[:, sel] = sample_family(b.family, b.params[which[sel] - start, :, 0].T, rng)
             start += len(b.comp)
         for r in regions:
             sel = np.flatnonzero(which == start)

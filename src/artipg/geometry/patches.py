@@ -1,7 +1,7 @@
 """Surface patches: the units in which every geometry template is sampled.
 
 Each template cuts its surface into components (faces, walls, caps, ends) and each
-component into one or more *patches* of six families, each with a closed-form
+component into one or more *patches* of seven families, each with an exact
 area-uniform sampler:
 
 ========  =========================================================================
@@ -15,6 +15,9 @@ band      r0 r1 z0 z1 arc nr nz: the conical band about z from (ρ = r0, z0) to
           (r1, z1), 0 <= θ <= arc, normal ``(nr cos θ, nr sin θ, nz)``
 zone      R z0 z1: the sphere of radius R between z0 and z1
 torus     R r arc: the torus about z, centre-line radius R, tube radius r
+revolved  o(3) e1(3) e3(3) r0 z0 r1 z1 bulge arc: one profile segment (line or arc)
+          revolved about an axis (:mod:`artipg.geometry.revolved`; the families'
+          curved cells)
 ========  =========================================================================
 
 :func:`sample_family` is the one sampler of every family (two uniforms per point in
@@ -34,7 +37,7 @@ import numpy as np
 TWO_PI = 2.0 * np.pi
 
 #: Families in sampling order, with their parameter counts.
-FAMILIES = {"rect": 12, "tri": 12, "sector": 15, "band": 7, "zone": 3, "torus": 3}
+FAMILIES = {"rect": 12, "tri": 12, "sector": 15, "band": 7, "zone": 3, "torus": 3, "revolved": 15}
 
 
 class Patch(NamedTuple):
@@ -247,7 +250,14 @@ def _torus_at(q, cv, sv, th, out):
     return out
 
 
-_PLACE = {"rect": _affine, "tri": _tri, "sector": _sector, "band": _band, "zone": _zone}
+def _revolved(q, u, v, out):
+    # the family lives in its own module, which imports this one for ``block``
+    from artipg.geometry.revolved import place_revolved
+
+    return place_revolved(q, u, v, out)
+
+
+_PLACE = {"rect": _affine, "tri": _tri, "sector": _sector, "band": _band, "zone": _zone, "revolved": _revolved}
 
 
 def sample_family(family: str, q: np.ndarray, rng: np.random.Generator, out: np.ndarray | None = None) -> np.ndarray:

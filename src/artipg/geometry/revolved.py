@@ -20,17 +20,15 @@ A point is placed from two uniforms, as the families of :mod:`artipg.geometry.pa
 ``v`` sets θ = v arc, ``u`` the position along the segment by the exact inverse of its
 area CDF (∝ ρ ds): a square root for straight segments, safeguarded Newton steps on
 ``c δ t + R (sin(a0 + δ t) - sin a0)`` for arcs of centre radius c and radius R.
-
-The family is not yet registered in :data:`artipg.geometry.patches.FAMILIES` (the
-compiled point draw hard-codes the six families); :func:`place_cells` draws every
-family including this one.
+It is registered in :data:`artipg.geometry.patches.FAMILIES`, so
+:func:`artipg.geometry.patches.sample_family` draws it like the other families.
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-from artipg.geometry.patches import block, place_family
+from artipg.geometry.patches import block
 from artipg.geometry.profile import arc_geometry
 
 NAME = "revolved"
@@ -134,10 +132,3 @@ def place_revolved(q: np.ndarray, u: np.ndarray, v: np.ndarray, out: np.ndarray 
     out[0:3] = o + r * radial + z * e3
     out[3:6] = nr * radial + nz * e3
     return out
-
-
-def place_cells(family: str, q: np.ndarray, u: np.ndarray, v: np.ndarray) -> np.ndarray:
-    """:func:`artipg.geometry.patches.place_family` extended with the revolved family."""
-    if family == NAME:
-        return place_revolved(q, u, v)
-    return place_family(family, q, u, v)
