@@ -103,8 +103,9 @@ def hardware(ctx):
     a = p.uniform("lever_limit", 0.6, 0.9) if lever else p.uniform("knob_limit", 0.8, 1.3)
     lim = (0.0, a) if lever else (-a, a)
     hz = p.uniform("handle_height", 0.9, 1.05) - d["under"] - d["H"] / 2
-    lock = d["n"] == 1 and p.flag("deadbolt", 0.4)
     leaves, backset = ctx.out["leaves"], p.uniform("backset", 0.06, 0.07)
+    # deadbolts on solid leaves only: a glazed leaf's muntins leave no room for a grip
+    lock = d["n"] == 1 and all(leaf.template != "glazed_leaf" for _, leaf, _, _ in leaves) and p.flag("deadbolt", 0.4)
     # one hardware design on both faces of every leaf, levers pointing to the hinges
     handles = iter(matching(tmpl, p.scope("handle"), [sg * s for *_, s in leaves for sg in (1.0, -1.0)]))
     for link, leaf, side, s in leaves:
