@@ -23,11 +23,9 @@ from artipg.export.annotation import _r, annotation_dict, annotation_text
 from artipg.export.folder import write_files_atomic
 from artipg.export.jsontext import dumps_indented
 from artipg.export.urdf import _fmt, build_urdf
-from artipg.geometry import cuboid, cylinder, frustum, prism, rect_ring, ring, tri_prism
-from artipg.geometry.base import TWO_PI, polygon_sdf, wedge_sdf
-from artipg.geometry.box import Cuboid, RectRing
-from artipg.geometry.prism import Prism, TriPrism
-from artipg.geometry.revolve import Frustum, Ring, revolve_arrays
+from artipg.geometry import BOX, Lathe
+from artipg.geometry.base import TWO_PI
+from artipg.geometry.revolve import revolve_arrays
 
 CATEGORIES = artipg.categories()
 
@@ -108,16 +106,16 @@ def test_revolve_arrays_with_cached_topology_matches_plain():
 def test_primitive_cache_keys_on_exact_parameters():
     calls = []
     cache = M.PrimitiveCache(lambda geom, p, s: calls.append(p) or (geom, tuple(p), s), maxsize=2)
-    assert cache(Cuboid, (0.1, 0.2, 0.3), 24) == (Cuboid, (0.1, 0.2, 0.3), 24)
-    cache(Cuboid, (0.1, 0.2, 0.3), 24)
+    assert cache(BOX, (0.1, 0.2, 0.3), 24) == (BOX, (0.1, 0.2, 0.3), 24)
+    cache(BOX, (0.1, 0.2, 0.3), 24)
     assert len(calls) == 1
-    cache(Cuboid, (0.0, 0.2, 0.3), 24)
-    cache(Cuboid, (-0.0, 0.2, 0.3), 24)  # equal floats, different bytes: kept apart
+    cache(BOX, (0.0, 0.2, 0.3), 24)
+    cache(BOX, (-0.0, 0.2, 0.3), 24)  # equal floats, different bytes: kept apart
     assert len(calls) == 3
-    cache(Cuboid, np.array([0.1, 0.2, 0.3]), 24)  # evicted (maxsize 2): computed again
+    cache(BOX, np.array([0.1, 0.2, 0.3]), 24)  # evicted (maxsize 2): computed again
     assert len(calls) == 4
-    cache(Cuboid, (0.1, 0.2, 0.3), 12)
-    cache(RectRing, (0.1, 0.2, 0.3), 12)
+    cache(BOX, (0.1, 0.2, 0.3), 12)
+    cache(Lathe(2), (0.1, 0.2, 0.3), 12)
     assert len(calls) == 6
 
 
@@ -368,71 +366,6 @@ def test_box_surface_grid_matches_plain():
         spacing = float(rng.choice([0.003, 0.004, 0.01]))
         a, b = G.box_surface_grid(boxes, spacing), _plain_box_surface_grid(boxes, spacing)
         assert _same(a[0], b[0]) and _same(a[1], b[1])
-
-
-FAST_SDF_CASES = [cuboid(0.3, 0.2, 0.1), cuboid(1e-4, 2.0, 0.5), rect_ring(0.5, 0.8, 0.04, 0.4, 0.7),
-                  rect_ring(0.02, 0.03, 0.001, 0.01, 0.015), frustum(0.15, 0.1, 0.3), frustum(0.15, 0.0, 0.3),
-                  cylinder(0.1, 0.3), ring(0.15, 0.14, 0.3), ring(0.15, 0.12, 0.3, arc=2.0),
-                  ring(0.15, 0.12, 0.3, arc=4.5), ring(0.12, 0.1, 0.3, arc=4.0, taper=0.04), prism(0.1, 0.2, 6),
-                  prism(0.1, 0.2, 3), prism(0.01, 0.02, 16), tri_prism(0.2, 0.1, 0.03, 0.05),
-                  tri_prism(0.02, 0.01, -0.03, 0.005)]
-
-
-def _plain_polygon_sdf(q, poly):
-    """polygon_sdf as first written, on (N, V, 2) arrays."""
-    a = poly
-    b = np.roll(poly, -1, axis=0)
-    e = b - a
-    w = q[:, None, :] - a[None]
-    ee = np.maximum((e * e).sum(axis=1), 1e-30)
-    t = np.clip((w * e[None]).sum(axis=2) / ee, 0.0, 1.0)
-    d = w - t[..., None] * e[None]
-    dist = np.sqrt((d * d).sum(axis=2).min(axis=1))
-    ay, by = a[:, 1][None], b[:, 1][None]
-    qy, qx = q[:, 1:2], q[:, 0:1]
-    cond = (ay > qy) != (by > qy)
-    xint = a[:, 0][None] + (qy - ay) * e[:, 0][None] / np.where(np.abs(e[:, 1]) > 1e-30, e[:, 1], 1e-30)[None]
-    inside = (cond & (qx < xint)).sum(axis=1) % 2 == 1
-    return np.where(inside, -dist, dist)
-
-
-def _plain_box_sdf(size, x):
-    q = np.abs(x) - np.asarray(size, dtype=float) / 2.0
-    return np.linalg.norm(np.maximum(q, 0.0), axis=1) + np.minimum(q.max(axis=1), 0.0)
-
-
-def _plain_sdf(geom, p, x):
-    """The templates' signed distances as first written (points as (N, 3) rows)."""
-    if geom is Cuboid:
-        return _plain_box_sdf(p, x)
-    if geom is RectRing:
-        return np.maximum(_plain_box_sdf(p[:3], x), -_plain_box_sdf((p[3], p[4], 4.0 * p[2] + 1.0), x))
-    if geom is Frustum and abs(p[0] - p[1]) <= 1e-12:
-        return geom.sdf(p, x)  # the cylinder's closed form did not change
-    rz = np.stack([np.hypot(x[:, 0], x[:, 1]), x[:, 2]], axis=1)
-    if geom is Frustum:
-        return _plain_polygon_sdf(rz, geom._profile(p))
-    if geom is Ring:
-        return np.maximum(_plain_polygon_sdf(rz, geom._profile(p)), wedge_sdf(x, p[3]))
-    poly, depth = (Prism.polygon(p[0], int(p[2])), p[1]) if geom is Prism else (TriPrism.polygon(p), p[3])
-    return np.maximum(_plain_polygon_sdf(x[:, :2], poly), np.abs(x[:, 2]) - depth / 2)
-
-
-@pytest.mark.parametrize("prim", FAST_SDF_CASES, ids=lambda p: p.geom.name)
-def test_row_layout_sdfs_match_the_plain_formulas_bit_for_bit(prim):
-    rng = np.random.default_rng(6)
-    p = np.asarray(prim.params)
-    for scale in (0.01, 0.1, 0.5):
-        x = rng.normal(size=(3000, 3)) * scale
-        x[:3] = 0.0
-        x[3, :2] = 0.0
-        x[4] = [-0.0, -0.0, 0.1]
-        x[5:8] = prim.geom.bounds(p)[[0, 1, 1]] * [[1, 1, 1], [1, 1, 1], [1, -1, 0.5]]  # corners, faces
-        assert _same(prim.geom.sdf(p, x), _plain_sdf(prim.geom, p, x))
-        assert _same(polygon_sdf(x[:, :2], _SQUARE), _plain_polygon_sdf(x[:, :2], _SQUARE))
-
-
-_SQUARE = np.array([[-0.1, -0.1], [0.1, -0.1], [0.1, 0.1], [-0.1, 0.1]])
 
 
 def test_gripper_points_and_clearance_match_plain(objects):

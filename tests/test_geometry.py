@@ -1,4 +1,4 @@
-"""Geometry templates: watertight meshes, exact extents, exact and uniform sampling."""
+"""Thin constructors of the geometry families: watertight meshes, exact extents, exact and uniform sampling."""
 
 from __future__ import annotations
 
@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 from scipy.spatial import cKDTree
 
-from artipg.geometry import (GEOMETRY_TEMPLATES, Tube, arc, cuboid, cylinder, frustum, line, prism, rect_ring,
+from artipg.geometry import (GEOMETRY_FAMILIES, Sweep, Tube, arc, cuboid, cylinder, frustum, line, prism, rect_ring,
                              ring, sphere, torus, tri_prism)
 
 CASES = {
@@ -32,8 +32,9 @@ CASES = {
 }
 
 
-def test_every_geometry_template_is_covered():
-    assert {p.geom.name for p in CASES.values()} == set(GEOMETRY_TEMPLATES)
+def test_every_geometry_family_is_covered():
+    # the swept tube is covered by tests/test_families.py
+    assert {type(p.geom) for p in CASES.values()} | {Sweep} == set(GEOMETRY_FAMILIES.values())
 
 
 @pytest.mark.parametrize("name", sorted(CASES))
@@ -139,26 +140,3 @@ def test_patches_partition_the_components(name):
         assert np.all(b.area >= 0.0)
         np.add.at(got.T, b.comp, b.area)
     np.testing.assert_allclose(got, comp_area, rtol=1e-12, atol=1e-15)
-
-
-def test_linear_patch_tables_match_their_builders():
-    """The compiled affine tables of the cap patches reproduce the general builders."""
-    from artipg.geometry.revolve import _FRUSTUM_CAPS, _RING_CAPS, Frustum, Ring
-
-    rng = np.random.default_rng(1)
-    for geom, table in ((Frustum, _FRUSTUM_CAPS), (Ring, _RING_CAPS)):
-        P = rng.random((7, len(geom.params)))
-        c, p, _ = table.shape
-        fast = (table.reshape(c * p, -1)[:, :-1] @ P.T + table.reshape(c * p, -1)[:, -1:]).reshape(c, p, len(P))
-        np.testing.assert_allclose(fast, geom._caps(P).params, rtol=1e-12, atol=1e-15)
-
-
-def test_cylinder_sdf_fast_path_matches_the_profile_distance():
-    from artipg.geometry.base import polygon_sdf
-    from artipg.geometry.revolve import Frustum
-
-    rng = np.random.default_rng(2)
-    p = (0.05, 0.05, 0.2, 1.0, 1.0)
-    x = rng.uniform(-0.2, 0.2, (4000, 3))
-    q = np.stack([np.hypot(x[:, 0], x[:, 1]), x[:, 2]], axis=1)
-    np.testing.assert_allclose(Frustum.sdf(p, x), polygon_sdf(q, Frustum._profile(p)), atol=1e-12)

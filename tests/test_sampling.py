@@ -125,13 +125,12 @@ def test_table_boxes_enclose_the_sampled_points(category):
     assert (pc.points >= lo - tol).all() and (pc.points <= hi + tol).all()
 
 
-def test_templates_are_known_by_their_name_and_unknown_names_fail():
-    from artipg.geometry import GEOMETRY_TEMPLATES
-    from artipg.geometry.base import GeometryTemplate, template_named
+def test_family_instances_are_one_per_shape_key_and_survive_pickling():
+    import pickle
 
-    for name, geom in GEOMETRY_TEMPLATES.items():
-        assert template_named(name) is geom and geom.name == name
-    with pytest.raises(KeyError, match="unknown geometry template 'blob'"):
-        template_named("blob")
-    with pytest.raises(ValueError, match="is taken"):
-        type("Impostor", (GeometryTemplate,), {"name": "cuboid"})
+    from artipg.geometry import GEOMETRY_FAMILIES, Extrusion, Lathe, Sweep
+
+    assert Lathe(4) is Lathe(4) and Lathe(4) is not Lathe(2)
+    assert Extrusion((4, 4)) is Extrusion([4, 4]) and Sweep("LA").name == "sweepLA"
+    for fam in (Lathe(4), Extrusion((3,)), GEOMETRY_FAMILIES["rounded_box"](()), Sweep("L")):
+        assert pickle.loads(pickle.dumps(fam)) is fam

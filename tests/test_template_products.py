@@ -105,7 +105,7 @@ def test_button_region_box():
         part = tmpl(p.scope(tmpl.__name__))
         x = part.anchors["front"][0]
         prim = part.primitives[0]
-        face = prim.params[1:3] if tmpl is controls.rect_button else (2 * prim.params[0],) * 2
+        face = prim.params[1:3] if tmpl is controls.rect_button else (2 * prim.geom.bounds(prim.params)[1, 0],) * 2
         ref = np.array([[x - 1e-4, -face[0] / 2, -face[1] / 2], [x + 1e-4, face[0] / 2, face[1] / 2]])
         assert part.regions["press"].box.tobytes() == ref.tobytes()
 

@@ -226,7 +226,7 @@ def test_samples_are_the_templates_own_draws_whichever_pieces_are_asked_for():
     all at once or a few pieces at a time in any order (only the wanted pieces'
     samples are computed; the stream is consumed as for all of them)."""
     from artipg.validate.shapes import DENSITY, MAX_PER_COMPONENT, MIN_PER_COMPONENT, _BOX_FEATURES
-    from artipg.geometry.box import Cuboid
+    from artipg.geometry import BOX
 
     rng = np.random.default_rng(9)
     for category in CATEGORIES:
@@ -243,8 +243,8 @@ def test_samples_are_the_templates_own_draws_whichever_pieces_are_asked_for():
                 p, _ = g.sample_components(P[r], cells - r * area.shape[1], pieces._stream(k))
                 for i, row in enumerate(rows):
                     want[row] = p[r == i]
-                    if g is Cuboid:
-                        want[row] = np.concatenate([want[row], _BOX_FEATURES * P[i]])
+                    if g is BOX and P[i, 3] == 0.0:
+                        want[row] = np.concatenate([want[row], _BOX_FEATURES * P[i, :3]])
             order = rng.permutation(pieces.n)
             for chunk in np.array_split(order, 3):
                 pieces.require(chunk)
@@ -257,8 +257,8 @@ def test_refine_bounds_the_distance_of_a_ball_over_a_box_better_than_the_samples
     from artipg.validate.shapes import Pieces as P
 
     geoms = [box.geom, ball.geom]
-    params = np.zeros((2, 5))
-    params[0, :3] = box.params
+    params = np.zeros((2, len(ball.params)))
+    params[0, :4] = box.params
     params[1, :len(ball.params)] = ball.params
     b0 = box.geom.bounds_batch(np.array([box.params]))[0]
     b1 = ball.geom.bounds_batch(np.array([ball.params]))[0]
@@ -433,14 +433,14 @@ def test_validation_is_deterministic_and_independent_of_earlier_checks(category)
 def test_piece_traits_hold_for_their_solids(category):
     """Every piece's box holds its samples; its radial extent holds the radius of
     every sample; symmetric pieces keep their SDF under a turn about their z axis;
-    whole balls have the SDF of a ball; boxes are exactly the Cuboid pieces."""
-    from artipg.geometry.box import Cuboid
+    whole balls have the SDF of a ball; boxes are exactly the unrounded box pieces."""
+    from artipg.geometry import BOX
 
     rng = np.random.default_rng(13)
     for seed in SEEDS:
         _, pc = _pieces(artipg.generate(category, seed))
         pc.require(np.arange(pc.n))
-        assert np.array_equal(pc.is_box, np.array([g is Cuboid for g in pc.geom]))
+        assert np.array_equal(pc.is_box, np.array([g is BOX and pc.params[i, 3] == 0.0 for i, g in enumerate(pc.geom)]))
         for i in range(pc.n):
             X = pc.samples(i)
             assert (np.abs(X - pc.center[i]) <= pc.half[i] + 1e-9).all(), (category, seed, i)
@@ -452,7 +452,7 @@ def test_piece_traits_hold_for_their_solids(category):
                 turned = x @ rotation(np.array([0.0, 0.0, 1.0]), rng.uniform(0, 2 * np.pi))[:3, :3].T
                 np.testing.assert_allclose(pc.sdf(np.full(len(x), i), turned), d, rtol=0, atol=1e-9)
             if pc.is_ball[i]:
-                np.testing.assert_allclose(d, np.linalg.norm(x, axis=1) - pc.params[i, 0], rtol=0, atol=1e-12)
+                np.testing.assert_allclose(d, np.linalg.norm(x, axis=1) - pc.ball_radius[i], rtol=0, atol=1e-12)
 
 
 @pytest.mark.parametrize("category", CATEGORIES)

@@ -14,7 +14,8 @@ from __future__ import annotations
 
 import math
 
-from artipg.geometry import RectRing, cuboid_between
+from artipg.geometry import cuboid_between
+from artipg.geometry.extrusion import frame_dims
 from artipg.geometry.transforms import translation
 from artipg.model.part import Part
 from artipg.rules import Category, Slot
@@ -65,8 +66,9 @@ def _stile(part) -> float:
     """Width of a framed panel's stile (its frame's side band), or inf for a slab:
     a handle on a framed door must sit on the stile, not on the recessed centre."""
     for prim in part.primitives:
-        if prim.geom is RectRing:
-            ox, oy, depth, ix, iy = prim.params
+        dims = frame_dims(prim)
+        if dims is not None:
+            ox, oy, depth, ix, iy = dims
             return (oy - iy) / 2
     return math.inf
 

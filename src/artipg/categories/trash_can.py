@@ -21,6 +21,7 @@ from __future__ import annotations
 import math
 
 from artipg.geometry import cuboid_between
+from artipg.geometry.lathe import frustum_dims
 from artipg.geometry.transforms import rot_y, translation
 from artipg.model.part import Part
 from artipg.rules import Category, Slot
@@ -55,7 +56,7 @@ def body(ctx):
         return _cabinet(ctx, root, 2 * R, p.uniform("depth", 0.35, 0.55), H)
     if p.flag("round", p_round):
         part = root.add(ctx.choose("body", BODIES)(p.scope("shell"), R, H))
-        return root, part, dict(round=True, D=2 * R, W=2 * R, H=H, R=R, r0=part.primitives[0].params[0])
+        return root, part, dict(round=True, D=2 * R, W=2 * R, H=H, R=R, r0=frustum_dims(part.primitives[0])[0])
     D = p.uniform("depth_ratio", 0.7, 1.0) * 2 * R
     part = root.add(open_box(p.scope("shell"), D, 2 * R, H, wall=p.uniform("wall", 0.003, 0.008)))
     return root, part, dict(round=False, D=D, W=2 * R, H=H, R=R, r0=D / 2)

@@ -22,8 +22,9 @@ from collections import OrderedDict
 import numpy as np
 import trimesh
 
-from artipg.geometry.box import Cuboid, RectRing
-from artipg.geometry.revolve import Frustum, Sphere
+from artipg.geometry import BOX, Primitive
+from artipg.geometry.extrusion import frame_dims, frame_pieces
+from artipg.geometry.lathe import ball_radius, frustum_dims
 from artipg.materials import CLASS_DENSITY, DEFAULT_CLASS, MATERIAL, density, material_class  # noqa: F401
 
 
@@ -166,22 +167,25 @@ def primitive_mass_properties(geom, params, sections: int = 24) -> tuple[float, 
 
 def _mass_properties(geom, params, sections):
     p = tuple(float(v) for v in params)
-    if geom is Cuboid:
-        return p[0] * p[1] * p[2], np.zeros(3), _box_inertia(*p)
-    if geom is RectRing:
+    prim = Primitive(geom, p)
+    if geom is BOX and p[3] == 0.0:
+        return p[0] * p[1] * p[2], np.zeros(3), _box_inertia(*p[:3])
+    frame = frame_dims(prim)
+    if frame is not None:
         vol, I = 0.0, np.zeros((3, 3))
-        for size, T in RectRing.pieces(p):
+        for size, T in frame_pieces(*frame):
             v = size[0] * size[1] * size[2]
             c = T[:3, 3]
             vol += v
             I += v * (_box_inertia(*size) + np.dot(c, c) * np.eye(3) - np.outer(c, c))
         return vol, np.zeros(3), I / max(vol, 1e-18)
-    if geom is Frustum and abs(p[0] - p[1]) < 1e-12:
-        r, h = p[0], p[2]
+    cyl = frustum_dims(prim)
+    if cyl is not None and abs(cyl[0] - cyl[1]) < 1e-12:
+        r, h = cyl[0], cyl[2]
         a = (3 * r * r + h * h) / 12.0
         return np.pi * r * r * h, np.zeros(3), np.diag([a, a, r * r / 2.0])
-    if geom is Sphere and p[1] <= -p[0] and p[2] >= p[0]:
-        R = p[0]
+    R = ball_radius(prim)
+    if R is not None:
         return 4.0 / 3.0 * np.pi * R ** 3, np.zeros(3), np.eye(3) * (0.4 * R * R)
     V, F = primitive_mesh_arrays(geom, geom.solid_params(p), sections)
     props = trimesh.triangles.mass_properties(V[F], density=1.0)

@@ -19,7 +19,6 @@ from typing import ClassVar, NamedTuple
 
 import numpy as np
 
-from artipg.geometry.patches import sample_family
 from artipg.geometry.transforms import IDENTITY, apply
 
 TWO_PI = 2.0 * np.pi
@@ -92,23 +91,12 @@ class GeometryTemplate:
         raise NotImplementedError
 
     @classmethod
-    def sample_components(cls, P: np.ndarray, comp: np.ndarray, rng: np.random.Generator):
+    def sample_components(cls, P: np.ndarray, comp: np.ndarray, rng: np.random.Generator):  # pragma: no cover
         """One area-uniform point and outward normal per row on component ``comp`` (k,).
 
         Returns points (k, 3) and unit normals (k, 3) in the local frame.
         """
-        blocks = cls.patches(P)
-        area = np.concatenate([b.area for b in blocks]).T  # (k, patches)
-        pcomp = np.concatenate([b.comp for b in blocks])
-        which = pick(np.where(pcomp[None, :] == comp[:, None], area, 0.0), rng)
-        out = np.empty((6, len(P)))
-        start = 0
-        for b in blocks:
-            sel = np.flatnonzero((which >= start) & (which < start + len(b.comp)))
-            if len(sel):
-                out[:, sel] = sample_family(b.family, b.params[which[sel] - start, :, sel].T, rng)
-            start += len(b.comp)
-        return out[:3].T, out[3:].T
+        raise NotImplementedError  # pragma: no cover - abstract (see artipg.geometry.family.Family)
 
     @classmethod
     def area(cls, P: np.ndarray) -> np.ndarray:

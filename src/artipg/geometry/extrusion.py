@@ -12,9 +12,8 @@ outline with arcs cannot be tapered (their tapered sides are oblique cones witho
 two-uniform sampler here). Caps of polygonal outlines are triangle cells (earcut);
 caps with arcs are sampled exactly by rejection against the exact inside test.
 
-Thin constructors: :func:`prism` and :func:`tri_prism` (today's
-:mod:`artipg.geometry.prism`), :func:`rect_ring` (:class:`~artipg.geometry.box.RectRing`)
-and outline helpers for blades, plier halves, clips and rulers in
+Thin constructors: :func:`prism` (regular n-gon), :func:`tri_prism` (wedge),
+:func:`rect_ring` (a rectangular frame) and outline helpers for blades, plier halves, clips and rulers in
 :mod:`artipg.geometry.outlines`.
 """
 
@@ -27,7 +26,7 @@ from artipg.geometry.base import CollisionPiece, Primitive, convex_hull
 from artipg.geometry.family import Family, Region, convex_pieces, rejection_region, row_triangles, triangulate, weld
 from artipg.geometry.patches import block
 from artipg.geometry.revolved import cells
-from artipg.geometry.transforms import IDENTITY
+from artipg.geometry.transforms import IDENTITY, translation
 
 
 class Extrusion(Family):
@@ -133,6 +132,22 @@ class Extrusion(Family):
             out.append(Region(sum(self.key) + e, area * (P[:, -1] ** 2 if e else 1.0), draw))
         return out
 
+    def frames(self, P) -> tuple[np.ndarray, np.ndarray]:
+        """Rows of ``P`` that are rectangular frames (an untapered, axis-aligned,
+        centred rectangle with a centred rectangular hole, as :func:`rect_ring` makes):
+        mask (M,) and their (ox, oy, depth, ix, iy) (M, 5) (meaningful where masked)."""
+        P = np.atleast_2d(np.asarray(P, dtype=float))
+        M = len(P)
+        if self.key != (4, 4):
+            return np.zeros(M, dtype=bool), np.zeros((M, 5))
+        L = P[:, :24].reshape(M, 2, 4, 3)
+        half = np.abs(L[..., :2]).max(axis=2)  # (M, 2 loops, 2 axes)
+        corner = (np.abs(L[..., :2]) == half[:, :, None]).all(axis=(1, 2, 3))
+        centred = (L[..., :2].sum(axis=2) == 0.0).all(axis=(1, 2))
+        ok = corner & centred & (L[..., 2] == 0.0).all(axis=(1, 2)) & (P[:, -1] == 1.0)
+        dims = np.column_stack([2 * half[:, 0, 0], 2 * half[:, 0, 1], P[:, -2], 2 * half[:, 1, 0], 2 * half[:, 1, 1]])
+        return ok, dims
+
     def sdf(self, p, x):
         """Exact without taper (the 2-D outline distance combined with the slab);
         with taper the same in each horizontal slice, scaled: exact sign, the distance
@@ -179,7 +194,11 @@ class Extrusion(Family):
 
     def collision(self, p):
         """Convex pieces of the polygonised outline (triangulation merged greedily),
-        each extruded (and tapered): one convex hull each."""
+        each extruded (and tapered): one convex hull each; a rectangular frame gives
+        its four boxes."""
+        ok, dims = self.frames(np.asarray(p, dtype=float)[None])
+        if ok[0]:
+            return [CollisionPiece("box", s, T) for s, T in frame_pieces(*(float(v) for v in dims[0]))]
         h, k = float(p[-2]), float(p[-1])
         out = []
         for piece in convex_pieces(self._rings(p, 24)):
@@ -251,18 +270,45 @@ def extrusion(loops, height: float, scale: float = 1.0, pose: np.ndarray = IDENT
     return Primitive(Extrusion(tuple(len(l) for l in ls)), params, pose, role)
 
 
+MAX_SIDES = 16
+
+
 def prism(r: float, h: float, n: int, pose: np.ndarray = IDENTITY, role: str = "") -> Primitive:
-    """Regular ``n``-gon prism (:class:`~artipg.geometry.prism.Prism`)."""
+    """Regular ``n``-gon prism (3 <= n <= 16) of circumradius ``r`` and height ``h``
+    along z, centred; the first vertex at angle π/n (a square prism is axis-aligned)."""
+    if not 3 <= n <= MAX_SIDES:
+        raise ValueError(f"prism needs 3..{MAX_SIDES} sides, got {n}")
     return extrusion([profile.regular_polygon(r, n)], h, pose=pose, role=role)
 
 
 def tri_prism(w: float, t: float, a: float, depth: float, pose: np.ndarray = IDENTITY, role: str = "") -> Primitive:
-    """Triangular prism (:class:`~artipg.geometry.prism.TriPrism`): triangle
-    (-w/2, 0), (w/2, 0), (a, t) extruded ``depth``."""
+    """Triangular prism (wedge): the triangle (-w/2, 0), (w/2, 0), (a, t) in the x-y
+    plane extruded ``depth`` along z, centred on z = 0."""
     return extrusion([profile.polygon([[-w / 2, 0.0], [w / 2, 0.0], [a, t]])], depth, pose=pose, role=role)
 
 
 def rect_ring(ox, oy, depth, ix, iy, pose: np.ndarray = IDENTITY, role: str = "") -> Primitive:
-    """Rectangular frame (:class:`~artipg.geometry.box.RectRing`): an ``ox`` x ``oy``
-    rectangle with a centred ``ix`` x ``iy`` hole, ``depth`` along z."""
+    """Rectangular frame: an ``ox`` x ``oy`` rectangle with a centred ``ix`` x ``iy``
+    hole, extruded ``depth`` along z and centred (a door frame, a window sash)."""
     return extrusion([profile.rectangle(ox, oy), profile.rectangle(ix, iy)], depth, pose=pose, role=role)
+
+
+def frame_dims(prim: Primitive) -> tuple | None:
+    """``(ox, oy, depth, ix, iy)`` of a primitive that is a rectangular frame (as
+    :func:`rect_ring` makes), else None."""
+    if not isinstance(prim.geom, Extrusion) or prim.geom.key != (4, 4):
+        return None
+    ok, dims = prim.geom.frames(np.asarray(prim.params, dtype=float)[None])
+    return tuple(float(v) for v in dims[0]) if ok[0] else None
+
+
+def frame_pieces(ox, oy, depth, ix, iy) -> list[tuple[tuple[float, float, float], np.ndarray]]:
+    """A rectangular frame as four disjoint boxes: (size, pose) pairs, the bands at +y,
+    -y (full width), +x, -x (between them)."""
+    bx, by = (ox - ix) / 2.0, (oy - iy) / 2.0
+    return [
+        ((ox, by, depth), translation(0, (iy + by) / 2, 0)),
+        ((ox, by, depth), translation(0, -(iy + by) / 2, 0)),
+        ((bx, iy, depth), translation((ix + bx) / 2, 0, 0)),
+        ((bx, iy, depth), translation(-(ix + bx) / 2, 0, 0)),
+    ]

@@ -15,8 +15,8 @@ The flat ends of partial turns are triangle cells for polygonal profiles, disc
 (sector) cells for circle profiles (the torus), and regions sampled by rejection for
 other profiles with arcs (:mod:`artipg.geometry.family`).
 
-Thin constructors :func:`cylinder`, :func:`frustum`, :func:`ring`, :func:`sphere` and
-:func:`torus` give today's :mod:`artipg.geometry.revolve` templates as lathe primitives.
+Thin constructors: :func:`cylinder`, :func:`frustum` (a cone), :func:`ring` (a hollow
+wall, optionally tapered or partial), :func:`sphere` (a slab) and :func:`torus`.
 """
 
 from __future__ import annotations
@@ -180,7 +180,15 @@ class Lathe(Family):
 
     def collision(self, p):
         """Convex pieces of the profile (triangulation merged greedily), each revolved:
-        one hull for a full turn of a piece on the axis, else equal convex sectors."""
+        one hull for a full turn of a piece on the axis, else equal convex sectors; a
+        cylinder and a whole sphere give the simulators' own shapes."""
+        prim = Primitive(self, tuple(p))
+        cyl = frustum_dims(prim)
+        if cyl is not None and abs(cyl[0] - cyl[1]) < 1e-9 and p[-3] >= _FULL:
+            return [CollisionPiece("cylinder", (float(cyl[0]), float(cyl[2])))]
+        R = ball_radius(prim)
+        if R is not None:
+            return [CollisionPiece("sphere", (float(R),))]
         arc = min(float(p[-3]), TWO_PI)
         out = []
         for piece in convex_pieces([self._poly(p, 24)]):
@@ -250,45 +258,88 @@ def lathe(loop, arc: float = TWO_PI, on=None, caps=(True, True), pose: np.ndarra
     return Primitive(Lathe(n), params, pose, role)
 
 
-def frustum(r_bottom: float, r_top: float, height: float, caps=(True, True), pose: np.ndarray = IDENTITY,
-            role: str = "") -> Primitive:
-    """A frustum along z centred on the origin (:class:`~artipg.geometry.revolve.Frustum`);
-    ``caps`` (bottom, top) False leaves that disc out of the sampled surface."""
-    h = height / 2
-    loop = profile.polygon([[0.0, -h], [r_bottom, -h], [r_top, h], [0.0, h]])
-    return lathe(loop, on=[float(caps[0]), 1.0, float(caps[1]), 0.0], pose=pose, role=role)
+def frustum(r_bottom: float, r_top: float, height: float, pose: np.ndarray = IDENTITY, role: str = "",
+            caps=(True, True)) -> Primitive:
+    """A frustum (a cone when ``r_top`` = 0) along local z, centred on the origin;
+    ``caps`` (bottom, top) False leaves that disc out of the sampled surface (the solid
+    stays closed)."""
+    h = float(height) / 2
+    return _counter_clockwise(_L4, (0.0, -h, 0.0, float(caps[0]), float(r_bottom), -h, 0.0, 1.0,
+                                    float(r_top), h, 0.0, float(caps[1]), 0.0, h, 0.0, 0.0, TWO_PI, 1.0, 1.0),
+                              pose, role)
 
 
-def cylinder(radius: float, height: float, caps=(True, True), pose: np.ndarray = IDENTITY, role: str = "") -> Primitive:
-    """A cylinder along z centred on the origin."""
-    return frustum(radius, radius, height, caps, pose, role)
+def cylinder(radius: float, height: float, pose: np.ndarray = IDENTITY, role: str = "", caps=(True, True)) -> Primitive:
+    """A cylinder of ``radius`` and ``height`` (metres) along local z, centred."""
+    return frustum(radius, radius, height, pose, role, caps)
 
 
-def ring(r_out: float, r_in: float, height: float, arc: float = TWO_PI, taper: float = 0.0,
-         pose: np.ndarray = IDENTITY, role: str = "") -> Primitive:
-    """A hollow cylinder wall (:class:`~artipg.geometry.revolve.Ring`): radii at the
-    bottom, both growing by ``taper`` to the top, over ``arc``."""
-    h = height / 2
-    loop = profile.polygon([[r_in, -h], [r_out, -h], [r_out + taper, h], [r_in + taper, h]])
-    return lathe(loop, arc=arc, pose=pose, role=role)
+def ring(r_out: float, r_in: float, height: float, arc: float = TWO_PI, pose: np.ndarray = IDENTITY,
+         role: str = "", taper: float = 0.0) -> Primitive:
+    """A hollow cylinder wall between radii ``r_in`` < ``r_out`` (at the bottom; both
+    grow by ``taper`` to the top), height ``height`` centred on z = 0, over ``arc``
+    radians from +x."""
+    h, ri, ro, tp = float(height) / 2, float(r_in), float(r_out), float(taper)
+    return _counter_clockwise(_L4, (ri, -h, 0.0, 1.0, ro, -h, 0.0, 1.0, ro + tp, h, 0.0, 1.0, ri + tp, h, 0.0, 1.0,
+                                    float(arc), 1.0, 1.0), pose, role)
 
 
-def sphere(radius: float, z_lo: float | None = None, z_hi: float | None = None, arc: float = TWO_PI,
-           pose: np.ndarray = IDENTITY, role: str = "") -> Primitive:
-    """The slab ``z_lo <= z <= z_hi`` of a sphere (:class:`~artipg.geometry.revolve.Sphere`),
-    closed by flat discs, optionally over a partial turn."""
+def sphere(radius: float, z_lo: float | None = None, z_hi: float | None = None, pose: np.ndarray = IDENTITY,
+           role: str = "", arc: float = TWO_PI) -> Primitive:
+    """The slab ``z_lo <= z <= z_hi`` of a sphere of ``radius`` about the origin (a
+    dome, a bowl bottom, a knob cap), closed by flat discs, optionally over a partial
+    turn."""
     R = float(radius)
     lo = -R if z_lo is None else float(z_lo)
     hi = R if z_hi is None else float(z_hi)
     a0, a1 = math.asin(max(-1.0, lo / R)), math.asin(min(1.0, hi / R))
     r_lo, r_hi = math.sqrt(max(R * R - lo * lo, 0.0)), math.sqrt(max(R * R - hi * hi, 0.0))
-    loop = np.array([[0.0, lo, 0.0], [r_lo, lo, math.tan((a1 - a0) / 4)], [r_hi, hi, 0.0], [0.0, hi, 0.0]])
-    return lathe(loop, arc=arc, pose=pose, role=role)
+    return _counter_clockwise(_L4, (0.0, lo, 0.0, 1.0, r_lo, lo, math.tan((a1 - a0) / 4), 1.0, r_hi, hi, 0.0, 1.0,
+                                    0.0, hi, 0.0, 1.0, float(arc), 1.0, 1.0), pose, role)
 
 
-def torus(R: float, r: float, arc: float = TWO_PI, caps=(True, True), pose: np.ndarray = IDENTITY,
-          role: str = "") -> Primitive:
-    """A torus (arc) about z (:class:`~artipg.geometry.revolve.Torus`): two half-circle
-    arcs revolved; ``caps`` close the ends of a partial arc."""
-    loop = np.array([[R + r, 0.0, 1.0], [R - r, 0.0, 1.0]])
-    return lathe(loop, arc=arc, caps=caps, pose=pose, role=role)
+def torus(R: float, r: float, arc: float = TWO_PI, pose: np.ndarray = IDENTITY, role: str = "",
+          caps=(True, True)) -> Primitive:
+    """A torus (arc) about local z: centre-line radius ``R``, tube radius ``r`` (two
+    half-circle arcs revolved); ``caps`` close the ends of a partial arc."""
+    R, r = float(R), float(r)
+    return _counter_clockwise(_L2, (R + r, 0.0, 1.0, 1.0, R - r, 0.0, 1.0, 1.0, float(arc), float(caps[0]),
+                                    float(caps[1])), pose, role)
+
+
+def _counter_clockwise(geom, params: tuple, pose, role) -> Primitive:
+    """A lathe primitive of a row whose profile the caller built counter-clockwise
+    (the thin constructors: no orientation test, no arrays; they run dozens of times
+    per object)."""
+    return tuple.__new__(Primitive, (geom, params, pose, role))
+
+
+_L2, _L4 = Lathe(2), Lathe(4)
+
+
+def ring_dims(prim: Primitive) -> tuple | None:
+    """``(r_out, r_in, height, arc, taper)`` of a primitive :func:`ring` made (a
+    four-segment profile off the axis), else None."""
+    p = prim.params
+    if prim.geom is not _L4 or p[0] <= 0.0:
+        return None
+    return p[4], p[0], p[9] - p[1], p[16], p[8] - p[4]
+
+
+def frustum_dims(prim: Primitive) -> tuple | None:
+    """``(r_bottom, r_top, height)`` of a primitive :func:`frustum` or :func:`cylinder`
+    made (a straight four-segment profile closed on the axis), else None."""
+    p = prim.params
+    if prim.geom is not _L4 or p[0] != 0.0 or p[12] != 0.0 or p[6] != 0.0 or p[16] < _FULL:
+        return None
+    return p[4], p[8], p[9] - p[1]
+
+
+def ball_radius(prim: Primitive) -> float | None:
+    """The radius of a primitive :func:`sphere` made whole (both poles, a full turn),
+    else None."""
+    p = prim.params
+    if prim.geom is not _L4 or p[0] != 0.0 or p[12] != 0.0 or p[6] == 0.0 or p[16] < _FULL:
+        return None
+    R = -p[1]
+    return R if p[4] == 0.0 and p[8] == 0.0 and p[9] == R > 0.0 else None

@@ -290,6 +290,6 @@ def circle(r: float, centre=(0.0, 0.0)) -> np.ndarray:
 
 def regular_polygon(r: float, n: int, phase: float | None = None) -> np.ndarray:
     """Counter-clockwise regular ``n``-gon of circumradius ``r``; the first vertex at
-    angle ``phase`` (default π/n, as :class:`artipg.geometry.prism.Prism`)."""
+    angle ``phase`` (default π/n: a square is axis-aligned)."""
     a = (math.pi / n if phase is None else phase) + TWO_PI * np.arange(n) / n
     return polygon(np.stack([r * np.cos(a), r * np.sin(a)], axis=1))

@@ -1,8 +1,6 @@
 """The box family: a box of extents (sx, sy, sz) centred on the origin with its edges
-rounded by radius ``r`` (0 <= r <= min(sx, sy, sz) / 2; r = 0 is today's
-:class:`~artipg.geometry.box.Cuboid`). The rectangular frame
-(:class:`~artipg.geometry.box.RectRing`) is an extrusion with a hole:
-:func:`artipg.geometry.extrusion.rect_ring`.
+rounded by radius ``r`` (0 <= r <= min(sx, sy, sz) / 2; r = 0 is the plain box of :func:`cuboid`). The
+rectangular frame is an extrusion with a hole: :func:`artipg.geometry.extrusion.rect_ring`.
 
 Surface: six flat faces (rect cells, shrunk by r), twelve quarter cylinders (revolved
 cells of a straight segment) and eight sphere octants (revolved cells of a quarter
@@ -20,7 +18,11 @@ from artipg.geometry.base import CollisionPiece, Primitive
 from artipg.geometry.family import Family, weld
 from artipg.geometry.patches import compile_linear, linear, rects
 from artipg.geometry.revolved import NAME, cells
-from artipg.geometry.transforms import IDENTITY
+from artipg.geometry.transforms import _EYE, IDENTITY
+
+# Primitive(...) without the NamedTuple's Python-level __new__ (same tuple): the box
+# constructors run dozens of times per object
+_tuple_new = tuple.__new__
 
 _CYC = ((0, 1, 2), (1, 2, 0), (2, 0, 1))  # (k, i, j) with e_i x e_j = e_k
 _EDGES = [(k, i, j, si, sj) for k, i, j in _CYC for si in (-1.0, 1.0) for sj in (-1.0, 1.0)]
@@ -77,6 +79,8 @@ class RoundedBox(Family):
         P = np.atleast_2d(np.asarray(P, dtype=float))
         A = self.component_areas(P).T  # (8, M)
         r = P[:, 3]
+        if not r.any():  # plain boxes (the common case): the edges and corners have no area
+            return [linear("rect", _FACE_COMP, P, _TABLES[0], A[:6])]
         edge = (0.5 * math.pi) * r * (P[:, :3] - 2 * r[:, None]).T[_EK]
         corner = np.broadcast_to((0.5 * math.pi) * r * r, (8, len(P)))
         return [linear("rect", _FACE_COMP, P, _TABLES[0], A[:6]),
@@ -85,24 +89,34 @@ class RoundedBox(Family):
 
     def component_areas(self, P):
         P = np.atleast_2d(np.asarray(P, dtype=float))
-        a, b, c = (P[:, :3] - 2 * P[:, 3:4]).T
         r = P[:, 3]
-        return np.column_stack([b * c, b * c, a * c, a * c, a * b, a * b,
-                                2 * math.pi * r * (a + b + c), 4 * math.pi * r * r])
+        out = np.empty((len(P), 8))
+        abc = P[:, :3] - 2 * P[:, 3:4] if r.any() else P[:, :3]
+        a, b, c = abc.T
+        out[:, 0] = out[:, 1] = b * c
+        out[:, 2] = out[:, 3] = a * c
+        out[:, 4] = out[:, 5] = a * b
+        out[:, 6] = 2 * math.pi * r * (a + b + c)
+        out[:, 7] = 4 * math.pi * r * r
+        return out
+
+    def is_box(self, P) -> np.ndarray:
+        """(M,) True for rows without rounding: plain boxes of extents P[:, :3]."""
+        return np.asarray(P, dtype=float).reshape(-1, 4)[:, 3] == 0.0
 
     def sdf(self, p, x):
         """Exact: the distance to the inner box, minus r."""
-        half = np.asarray(p[:3], dtype=float) / 2 - p[3]
-        q = np.abs(np.asarray(x, dtype=float)) - half
-        return (np.linalg.norm(np.maximum(q, 0.0), axis=1) + np.minimum(q.max(axis=1), 0.0)) - p[3]
+        return box_rows_sdf(np.abs(np.asarray(x, dtype=float).T), np.asarray(p[:3], dtype=float) - 2 * p[3]) - p[3]
 
     def bounds(self, p):
         h = np.asarray(p[:3], dtype=float) / 2
         return np.stack([-h, h])
 
     def bounds_batch(self, P):
-        h = np.asarray(P, dtype=float)[:, :3] / 2
-        return np.stack([-h, h], axis=1)
+        out = np.empty((len(P), 2, 3))
+        np.multiply(P[:, :3], 0.5, out=out[:, 1])
+        np.negative(out[:, 1], out=out[:, 0])
+        return out
 
     def volume(self, p):
         a, b, c = (float(v) - 2 * p[3] for v in p[:3])
@@ -160,6 +174,15 @@ class RoundedBox(Family):
         return np.column_stack([x[rows, i] + half[i], x[rows, j] + half[j]])
 
 
+def box_rows_sdf(ax: np.ndarray, size) -> np.ndarray:
+    """Signed distance (N,) to a centred box of extents ``size`` (3,) of points given as
+    absolute coordinate rows ``ax`` (3, N) (rows: several times faster than (N, 3))."""
+    q = ax - (np.asarray(size, dtype=float) / 2.0)[:, None]
+    m = np.maximum(q, 0.0)
+    m *= m
+    return np.sqrt((m[0] + m[1]) + m[2]) + np.minimum(np.maximum(np.maximum(q[0], q[1]), q[2]), 0.0)
+
+
 def _blocks(P):
     """The cells of rows ``P`` (M, 4): six face rects (shrunk by r), twelve quarter
     cylinders (a segment (r, 0) -> (r, edge length) revolved a quarter turn) and eight
@@ -191,4 +214,24 @@ def rounded_box(sx: float, sy: float, sz: float, r: float = 0.0, pose: np.ndarra
     """A box of extents (sx, sy, sz) metres with edges rounded by ``r``, centred at ``pose``."""
     if not 0.0 <= r <= 0.5 * min(sx, sy, sz):
         raise ValueError(f"edge radius {r} must lie in [0, min(sx, sy, sz) / 2]")
-    return Primitive(RoundedBox(()), (float(sx), float(sy), float(sz), float(r)), pose, role)
+    return Primitive(BOX, (float(sx), float(sy), float(sz), float(r)), pose, role)
+
+
+#: The one box family instance (every box, rounded or not).
+BOX = RoundedBox(())
+
+
+def cuboid(sx: float, sy: float, sz: float, pose: np.ndarray = IDENTITY, role: str = "") -> Primitive:
+    """A box of extents (sx, sy, sz) metres centred at ``pose`` (no rounding)."""
+    return _tuple_new(Primitive, (BOX, (float(sx), float(sy), float(sz), 0.0), pose, role))
+
+
+def cuboid_between(lo, hi, role: str = "") -> Primitive:
+    """An axis-aligned box spanning corners ``lo`` and ``hi`` (3,) in metres."""
+    x0, y0, z0 = lo
+    x1, y1, z1 = hi
+    T = _EYE.copy()  # translation() of the centre, inline
+    T[0, 3] = 0.5 * (x0 + x1)
+    T[1, 3] = 0.5 * (y0 + y1)
+    T[2, 3] = 0.5 * (z0 + z1)
+    return _tuple_new(Primitive, (BOX, (float(x1 - x0), float(y1 - y0), float(z1 - z0), 0.0), T, role))

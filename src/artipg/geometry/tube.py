@@ -3,8 +3,10 @@ lines and circular arcs (handles, bails, spouts, temples).
 
 The path lives in the local x-z plane, starts at the origin heading along
 ``(cos α0, 0, sin α0)``. Because lines and arcs join tangentially, the tube is exactly
-the union of open cylinders and open torus arcs, which is how it is sampled; its mesh
-is a single watertight loft.
+the union of cylinders and torus arcs (lathe primitives, :mod:`artipg.geometry.lathe`)
+whose joints are left out of the sampled surface, which is how :func:`tube` builds it;
+its mesh is a single watertight loft (the swept-tube family,
+:mod:`artipg.geometry.sweep`, is the one-primitive form).
 """
 
 from __future__ import annotations
@@ -15,7 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from artipg.geometry.base import Primitive
-from artipg.geometry.revolve import Frustum, Torus
+from artipg.geometry.lathe import frustum, torus
 from artipg.geometry.transforms import IDENTITY
 
 Y = np.array([0.0, 1.0, 0.0])
@@ -52,7 +54,7 @@ def _walk(segments: tuple, heading: float):
 def _primitives(r: float, segments: tuple, heading: float, pose: np.ndarray, role: str) -> list[Primitive]:
     """:meth:`Tube.primitives` of ``Tube(r, segments, heading)`` (without making the Tube)."""
     n = len(segments)
-    kinds, params, frames = [], [], []
+    made, frames = [], []
     for i, (seg, (x, z), a) in enumerate(_walk(segments, heading)):
         c0, c1 = float(i == 0), float(i == n - 1)
         ca, sa = math.cos(a), math.sin(a)
@@ -61,8 +63,7 @@ def _primitives(r: float, segments: tuple, heading: float, pose: np.ndarray, rol
             # local z -> heading (ca, 0, sa); local x -> (sa, 0, -ca); local y -> y
             frames += (sa, 0.0, ca, x + ca * L / 2, 0.0, 1.0, 0.0, 0.0,
                        -ca, 0.0, sa, z + sa * L / 2, 0.0, 0.0, 0.0, 1.0)
-            kinds.append(Frustum)
-            params.append((r, r, L, c0, c1))
+            made.append(frustum(r, r, L, None, role, (c0, c1)))
         else:
             R, turn = seg[1], seg[2]
             sg = 1.0 if turn > 0 else -1.0
@@ -73,12 +74,11 @@ def _primitives(r: float, segments: tuple, heading: float, pose: np.ndarray, rol
             ez = (ex[1] * ey[2] - ex[2] * ey[1], ex[2] * ey[0] - ex[0] * ey[2], ex[0] * ey[1] - ex[1] * ey[0])
             frames += (ex[0], ey[0], ez[0], cx, ex[1], ey[1], ez[1], 0.0,
                        ex[2], ey[2], ez[2], cz, 0.0, 0.0, 0.0, 1.0)
-            kinds.append(Torus)
-            params.append((R, r, abs(turn), c0, c1))
+            made.append(torus(R, r, abs(turn), None, role, (c0, c1)))
     # one stacked product places every piece (the same 4x4 product for each)
     placed = pose @ np.fromiter(frames, float, 16 * n).reshape(n, 4, 4)  # fromiter: faster than np.array
     new = tuple.__new__  # Primitive(...) without the NamedTuple's Python-level __new__
-    return [new(Primitive, (g, p, T, role)) for g, p, T in zip(kinds, params, placed)]
+    return [new(Primitive, (m[0], m[1], T, role)) for m, T in zip(made, placed)]
 
 
 @dataclass(frozen=True)

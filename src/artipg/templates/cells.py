@@ -11,7 +11,7 @@ The conventions are those of :mod:`artipg.templates.panels` and
 
 from __future__ import annotations
 
-from artipg.geometry import RectRing
+from artipg.geometry.extrusion import frame_dims
 from artipg.geometry.transforms import translation
 from artipg.rules.params import option_name
 from artipg.templates.mounting import free_edge_yz, front_thickness, handle_pose, mount_hinged, mount_sliding
@@ -67,8 +67,9 @@ def add_door(ctx, parent, q, *, front_x: float, outer, side: str, limits, templa
                         size_yz=size, side=side, limits=limits, parent_pose=parent_pose, name=name)
     if handle is not None:
         prim = door.primitives[0]
-        if prim.geom is RectRing:  # framed fronts: keep the handle on the frame, not the recessed panel
-            margin = min(margin, (prim.params[0] - prim.params[3]) / 4)
+        dims = frame_dims(prim)
+        if dims is not None:  # framed fronts: keep the handle on the frame, not the recessed panel
+            margin = min(margin, (dims[0] - dims[3]) / 4)
         horizontal = side in ("+z", "-z")
         span = size[0] if horizontal else size[1]
         length = handle_length if handle_length is not None else min(0.4 * span, 0.35)

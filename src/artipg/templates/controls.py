@@ -32,7 +32,7 @@ import math
 
 import numpy as np
 
-from artipg.geometry import Cuboid, cuboid, frustum, prism, rect_ring, ring
+from artipg.geometry import BOX, cuboid, frustum, prism, rect_ring, ring
 from artipg.geometry.transforms import Placer, rot_y, rot_z, translation
 from artipg.model.part import Deferred, Grasp, Part, Region
 
@@ -172,11 +172,11 @@ def button_bezel(p, button: Part, gap: float | None = None) -> Part:
     depth = back + p.uniform("cover", 0.2, 0.5) * (front - back)
     T = _ALONG_X.copy()  # translation(-depth / 2, 0, 0) @ _ALONG_X, bit for bit
     T[0, 3] = -depth / 2
-    if prim.geom is Cuboid:
-        _, w, h = prim.params
+    if prim.geom is BOX:
+        _, w, h = prim.params[:3]
         ring_ = rect_ring(h + 2 * (g + wall), w + 2 * (g + wall), depth, h + 2 * g, w + 2 * g, T, role="bezel")
     else:
-        r = max(prim.params[0], prim.params[1])
+        r = float(prim.geom.bounds(prim.params)[1, 0])  # the largest radius
         ring_ = ring(r + g + wall, r + g, depth, pose=T, role="bezel")
     return Part("panel", "button_bezel", [ring_], anchors={"front": (-depth, 0.0, 0.0)})
 

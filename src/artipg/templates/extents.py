@@ -9,41 +9,28 @@ permutation, and the axis of a rotation about it), the corner transform reduces 
 one product and one sum per corner, made here in the same order, so the result is
 the same float; other primitives use their bounds. The local box's entry along that
 axis is written out for the templates whose entry is a plain expression of their
-parameters (a torus arc's box, say, takes a dozen numpy calls for its x-y extent,
-which a span along its axis does not need).
+parameters (a ring's box, say, takes a dozen numpy calls for its x-y extent, which a
+span along its axis does not need).
 """
 
 from __future__ import annotations
 
-import math
+from artipg.geometry import BOX, Lathe
 
-from artipg.geometry import Cuboid, Frustum, Ring, Sphere, Torus
+_LATHE4 = Lathe(4)
 
 
 def _local(geom, params, k: int):
     """(lo, hi) of ``geom.bounds(params)[:, k]`` (the local box along local axis ``k``),
     the same floats, made in Python where the entry is a plain expression of the
-    parameters (the curved templates' boxes are numpy arrays, an arc's made from
+    parameters (the curved families' boxes are numpy arrays, an arc's made from
     candidate points); None elsewhere."""
-    if geom is Cuboid:
+    if geom is BOX:
         b1 = params[k] / 2
         return -b1, b1
-    if geom is Frustum:  # ±max(r0, r1) across, ±h/2 along z
-        if k == 2:
-            return -params[2] / 2, params[2] / 2
-        r = max(params[0], params[1])
-        return -r, r
-    if geom is Sphere:  # a segment lo <= z <= hi of a sphere of radius R
-        R, zlo, zhi = params
-        if k == 2:
-            return zlo, zhi
-        r = R if zlo <= 0.0 <= zhi else math.sqrt(max(R * R - min(zlo * zlo, zhi * zhi), 0.0))
-        return -r, r
-    if k == 2:  # the axial extent of rings and tori
-        if geom is Torus:
-            return -params[1], params[1]
-        if geom is Ring:
-            return -params[2] / 2, params[2] / 2
+    if geom is _LATHE4 and k == 2 and params[1] == params[5] <= params[9] == params[13] and not (
+            params[2] or params[6] or params[10] or params[14]):  # frusta and rings: z of the straight profile's ends
+        return params[1], params[9]
     return None
 
 

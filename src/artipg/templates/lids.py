@@ -3,7 +3,7 @@
 Frame: origin at the centre of the vessel's rim plane, +z up out of the vessel. A lid
 rests on the rim (its underside at z = 0) and covers ``radius``, the rim's outer
 radius (a round rim, or the circumradius of a ``prism_shell`` rim when ``sides`` = n:
-polygon lids use the vertex orientation of :class:`artipg.geometry.Prism`), plus an
+polygon lids use the vertex orientation of :func:`artipg.geometry.prism`), plus an
 overhang. An optional skirt hangs outside the rim below z = 0.
 Anchors: ``top`` (highest point on the axis), ``hinge`` (bottom outer edge at +x, where
 a flip hinge goes), ``front`` (outer edge at -x). Attach with :func:`mount_lid`, which

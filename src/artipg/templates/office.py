@@ -15,7 +15,8 @@ import math
 
 import numpy as np
 
-from artipg.geometry import Ring, cuboid_between, cylinder, ring, tri_prism
+from artipg.geometry import cuboid_between, cylinder, ring, tri_prism
+from artipg.geometry.lathe import ring_dims
 from artipg.geometry.transforms import Placer, rot_x, rot_z, translation
 from artipg.model.part import Deferred, Part, Region
 from artipg.templates.extents import span
@@ -136,4 +137,4 @@ ARMS = {flat_arm: 2.0, rounded_arm: 2.0, humped_arm: 1.0}
 def arm_top(part: Part) -> float:
     """Highest z of an arm part (the top of its bounds), metres above the axle."""
     # the skirts' rings around the axle stay below the cover: leave them out
-    return span([pr for pr in part.primitives if not (pr.geom is Ring and pr.role == "skirt")], 2)[1]
+    return span([pr for pr in part.primitives if not (pr.role == "skirt" and ring_dims(pr) is not None)], 2)[1]

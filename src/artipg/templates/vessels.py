@@ -14,7 +14,7 @@ the collar is their rim (a lid from :mod:`artipg.templates.lids` rests on it).
 from __future__ import annotations
 
 from artipg.geometry import frustum, ring
-from artipg.geometry.revolve import Ring
+from artipg.geometry.lathe import ring_dims
 from artipg.geometry.transforms import translation
 from artipg.model.part import Part, Region
 
@@ -24,9 +24,10 @@ def wall_radius(part: Part, z: float) -> float:
     its ``"wall"`` rings (the largest one covering z; 0 where there is none)."""
     r = 0.0
     for pr in part.primitives:
-        if pr.geom is not Ring or pr.role != "wall":
+        dims = ring_dims(pr) if pr.role == "wall" else None
+        if dims is None:
             continue
-        ro, _, h, _, tp = pr.params
+        ro, _, h, _, tp = dims
         z0 = float(pr.pose[2, 3]) - h / 2  # a float: numpy scalars are slower at the arithmetic
         if z0 - 1e-9 <= z <= z0 + h + 1e-9:
             r = max(r, ro + tp * (z - z0) / h)

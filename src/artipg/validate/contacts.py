@@ -24,7 +24,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from artipg.geometry.box import _box_rows_sdf
+from artipg.geometry.rounded_box import box_rows_sdf as _box_rows_sdf
 from artipg.validate.kinematics import rigid_inverse
 from artipg.validate.shapes import Pieces
 
@@ -138,7 +138,7 @@ def pair_distance(pieces: Pieces, a: np.ndarray, b: np.ndarray, Wa: np.ndarray, 
     i = ball.nonzero()[0]
     if len(i):  # exact: centre distance minus the radii
         gap = Wa[i, :3, 3] - Wb[i, :3, 3]
-        out[i] = np.sqrt((gap * gap).sum(axis=1)) - pieces.params[a[i], 0] - pieces.params[b[i], 0]
+        out[i] = np.sqrt((gap * gap).sum(axis=1)) - pieces.ball_radius[a[i]] - pieces.ball_radius[b[i]]
     i = (~box & ~ball).nonzero()[0]
     if len(i):
         rel_ab = rigid_inverse(Wb[i]) @ Wa[i]
@@ -271,7 +271,7 @@ def box_distance(ha, hb, Wa, Wb, edge_margin=None) -> np.ndarray:
 
 def _box_sdf(size: np.ndarray, x: np.ndarray) -> np.ndarray:
     """Smallest signed distance (K,) of points ``x`` (K, V, 3) to centred boxes of
-    extents ``size`` (K, 3): :meth:`artipg.geometry.Cuboid.sdf`'s formula with one box
+    extents ``size`` (K, 3): :meth:`artipg.geometry.RoundedBox.sdf`'s formula (r = 0) with one box
     per row (its (3, 1, n) broadcast form)."""
     K, V = x.shape[:2]
     ax = np.abs(x.reshape(-1, 3).T)[:, None, :]  # (3, 1, K V)

@@ -215,8 +215,7 @@ def load_urdf_geometry(urdf, rng: np.random.Generator) -> tuple[Kinematics, Piec
     """Kinematics and visual geometry pieces of a URDF file (see module docstring)."""
     import trimesh
 
-    from artipg.geometry.box import Cuboid
-    from artipg.geometry.revolve import Frustum, Sphere
+    from artipg.geometry import cuboid, cylinder, sphere
 
     urdf = Path(urdf)
     robot = _load_robot(urdf)
@@ -231,12 +230,11 @@ def load_urdf_geometry(urdf, rng: np.random.Generator) -> tuple[Kinematics, Piec
             part_names.append(vis.name or f"{link.name}_visual{k}")
             part_link.append(li)
             if g.box is not None:
-                prims.append((li, pi, Cuboid, tuple(np.asarray(g.box.size, dtype=float)), T))
+                prims.append((li, pi, *cuboid(*np.asarray(g.box.size, dtype=float))[:2], T))
             elif g.cylinder is not None:
-                prims.append((li, pi, Frustum, (g.cylinder.radius, g.cylinder.radius, g.cylinder.length, 1.0, 1.0), T))
+                prims.append((li, pi, *cylinder(g.cylinder.radius, g.cylinder.length)[:2], T))
             elif g.sphere is not None:
-                r = g.sphere.radius
-                prims.append((li, pi, Sphere, (r, -r, r), T))
+                prims.append((li, pi, *sphere(g.sphere.radius)[:2], T))
             elif g.mesh is not None:
                 path = _mesh_path(urdf, g.mesh.filename)
                 m = trimesh.load(str(path), force="mesh", process=False)
@@ -248,13 +246,13 @@ def load_urdf_geometry(urdf, rng: np.random.Generator) -> tuple[Kinematics, Piec
                 for piece in parts:
                     box = _as_box(piece)
                     if box is not None:  # boxes get the exact box-box tests
-                        prims.append((li, pi, Cuboid, box[0], T @ box[1]))
+                        prims.append((li, pi, *cuboid(*box[0])[:2], T @ box[1]))
                     else:
                         meshes.append((li, pi, piece, T))
     M = len(prims) + len(meshes)
     if M == 0:
         raise ValueError(f"{urdf}: no visual geometry")
-    width = 5
+    width = max([len(p[3]) for p in prims], default=1)
     link = np.array([p[0] for p in prims] + [m[0] for m in meshes], dtype=np.int64)
     part = np.array([p[1] for p in prims] + [m[1] for m in meshes], dtype=np.int64)
     Ts = np.array([p[4] for p in prims] + [m[3] for m in meshes], dtype=float).reshape(M, 4, 4)

@@ -1,7 +1,7 @@
 """Solid pieces of an object for validation: exact SDFs and surface samples per piece.
 
-A *piece* is one solid in one link: a geometry-template primitive of an artipg object
-(a rectangular ring counts as its four boxes) or a triangle mesh of a URDF folder.
+A *piece* is one solid in one link: a geometry-family primitive of an artipg object
+(a rectangular frame counts as its four boxes) or a triangle mesh of a URDF folder.
 Every piece carries
 
 - its frame in its link frame, ``T`` (M, 4, 4), and its local bounding box
@@ -28,11 +28,12 @@ from functools import cached_property
 
 import numpy as np
 
+from artipg.geometry import profile
 from artipg.geometry.base import pick
-from artipg.geometry.box import Cuboid, RectRing
+from artipg.geometry.extrusion import Extrusion
+from artipg.geometry.lathe import Lathe
 from artipg.geometry.patches import sample_family
-from artipg.geometry.prism import Prism, TriPrism
-from artipg.geometry.revolve import Frustum, Ring, Sphere, Torus
+from artipg.geometry.rounded_box import BOX, RoundedBox
 
 #: Surface samples per square metre, and the per-component minimum / maximum.
 DENSITY = 2000.0
@@ -52,8 +53,7 @@ class Pieces:
     center, half : (M, 3) float64
         Local axis-aligned bounding box (centre and half extents), piece frame.
     geom : list
-        Geometry template of every piece, or None for a mesh piece. Templates
-        validation has no traits for (:data:`_TRAITS`) raise ``ValueError``.
+        Geometry family of every piece, or None for a mesh piece (see :func:`traits`).
     params : (M, p) float64
         Parameters of primitive pieces (zero-padded).
     part_names : list of str
@@ -84,6 +84,7 @@ class Pieces:
         M = self.n
         self.is_box = np.zeros(M, dtype=bool)
         self.is_ball = np.zeros(M, dtype=bool)
+        self.ball_radius = np.zeros(M)
         self.symmetric = np.zeros(M, dtype=bool)
         self.radial = np.tile([-np.inf, np.inf], (M, 1))
         for k, g in enumerate(self._kinds):
@@ -196,26 +197,33 @@ class Pieces:
     def of(cls, obj, rng: np.random.Generator) -> "Pieces":
         """The primitives of an :class:`artipg.model.ArticulatedObject` as pieces.
 
-        A rectangular ring (frame) becomes its four boxes, so that every box-like
-        solid goes through the exact box-box tests of :mod:`artipg.validate.contacts`.
+        A rectangular frame becomes its four boxes, so that every box-like solid goes
+        through the exact box-box tests of :mod:`artipg.validate.contacts`.
         """
         table = obj.primitive_table
         geom, Ps, Ts, links, parts, boxes = [], [], [], [], [], []
-        for g in table.groups:
-            T = table.prim_T[g.prim]
-            if g.geom is RectRing:
-                sizes, offs = _rect_ring_boxes(g.P)
-                T = T.repeat(4, axis=0)
-                T[:, :3, 3] += np.einsum("kij,kj->ki", T[:, :3, :3], offs)
-                tmpl, P, link, part = Cuboid, sizes, g.link.repeat(4), g.part.repeat(4)
-            else:
-                tmpl, P, link, part = g.geom, g.P, g.link, g.part
-            geom += [tmpl] * len(P)
+
+        def add(tmpl, P, T, link, part):
+            geom.extend([tmpl] * len(P))
             Ps.append(P)
             Ts.append(T)
             links.append(link)
             parts.append(part)
             boxes.append(tmpl.bounds_batch(P))
+
+        for g in table.groups:
+            T = table.prim_T[g.prim]
+            frame = g.geom.frames(g.P) if isinstance(g.geom, Extrusion) else None
+            if frame is None or not frame[0].any():
+                add(g.geom, g.P, T, g.link, g.part)
+                continue
+            ok, dims = frame
+            if not ok.all():
+                add(g.geom, g.P[~ok], T[~ok], g.link[~ok], g.part[~ok])
+            sizes, offs = _rect_ring_boxes(dims[ok])
+            T = T[ok].repeat(4, axis=0)
+            T[:, :3, 3] += np.einsum("kij,kj->ki", T[:, :3, :3], offs)
+            add(BOX, np.column_stack([sizes, np.zeros(len(sizes))]), T, g.link[ok].repeat(4), g.part[ok].repeat(4))
         params = np.zeros((len(geom), max(P.shape[1] for P in Ps)))
         k = 0
         for P in Ps:
@@ -234,51 +242,47 @@ class Pieces:
 # least the distance of a point's radius to this range).
 
 def _box_traits(pieces, rows, P):
-    pieces.is_box[rows] = True
+    pieces.is_box[rows] = P[:, 3] == 0.0
 
 
 def _no_traits(pieces, rows, P):
     pass
 
 
-def _frustum_traits(pieces, rows, P):
-    pieces.symmetric[rows] = True
-    pieces.radial[rows] = np.column_stack([np.zeros(len(P)), np.maximum(P[:, 0], P[:, 1])])
-
-
-def _ring_traits(pieces, rows, P):
-    ro, ri, tp = P[:, 0], P[:, 1], P[:, 4]
-    pieces.symmetric[rows] = P[:, 3] >= 2 * np.pi - 1e-9
-    pieces.radial[rows] = np.column_stack([np.minimum(ri, ri + tp), np.maximum(ro, ro + tp)])
-
-
-def _sphere_traits(pieces, rows, P):
-    R, lo, hi = P[:, 0], P[:, 1], P[:, 2]
-    pieces.symmetric[rows] = True
-    pieces.is_ball[rows] = (lo <= -R) & (hi >= R)
-    pieces.radial[rows] = np.column_stack([np.zeros(len(P)), R])
-
-
-def _torus_traits(pieces, rows, P):
-    R, r = P[:, 0], P[:, 1]
-    pieces.symmetric[rows] = P[:, 2] >= 2 * np.pi - 1e-9
-    pieces.radial[rows] = np.column_stack([R - r, R + r])
-
-
-#: Geometry template -> its traits (see above). RectRing is absent: :meth:`Pieces.of`
-#: splits it into boxes.
-_TRAITS = {Cuboid: _box_traits, Frustum: _frustum_traits, Ring: _ring_traits, Sphere: _sphere_traits,
-           Torus: _torus_traits, Prism: _no_traits, TriPrism: _no_traits}
+def _lathe_traits(pieces, rows, P):
+    """Full turns are symmetric; the radial range is that of the profile (vertices and
+    the discs of its arcs: a bound); a whole sphere (every vertex at one distance from
+    the origin, its one arc centred there) is a ball."""
+    n = (P.shape[1] - 3) // 4
+    V = P[:, :4 * n].reshape(len(P), n, 4)
+    p0, p1, b = profile.segments(V[..., :3])
+    c, rad, _, _ = profile.arc_geometry(p0, p1, b)
+    arc = b != 0.0
+    rr = np.where(arc, rad, 0.0)
+    lo = np.minimum(V[..., 0].min(axis=1), np.where(arc, c[..., 0] - rr, np.inf).min(axis=1))
+    hi = np.maximum(V[..., 0].max(axis=1), np.where(arc, c[..., 0] + rr, -np.inf).max(axis=1))
+    full = P[:, 4 * n] >= 2 * np.pi - 1e-9
+    pieces.symmetric[rows] = full
+    pieces.radial[rows] = np.column_stack([np.maximum(lo, 0.0), hi])
+    d = np.hypot(V[..., 0], V[..., 1])
+    R = d.max(axis=1)
+    ball = (full & (arc.sum(axis=1) == 1) & (d.min(axis=1) >= R * (1 - 1e-12))
+            & (np.where(arc, np.hypot(c[..., 0], c[..., 1]), 0.0).max(axis=1) <= 1e-12 * R)
+            & (V[:, 0, 1] <= -R * (1 - 1e-12)) & (V[:, 2, 1] >= R * (1 - 1e-12)))
+    pieces.is_ball[rows] = ball
+    pieces.ball_radius[rows] = np.where(ball, R, 0.0)
 
 
 def traits(geom):
-    """The trait setter of geometry template ``geom``; ``ValueError`` for a template
-    validation does not know."""
-    try:
-        return _TRAITS[geom]
-    except KeyError:
-        raise ValueError(f"validation does not know geometry template {getattr(geom, '__name__', geom)!r}: "
-                         "add its traits to artipg.validate.shapes._TRAITS") from None
+    """The trait setter of geometry family ``geom`` (see above); ``ValueError`` for a
+    geometry validation does not know."""
+    if isinstance(geom, RoundedBox):
+        return _box_traits
+    if isinstance(geom, Lathe):
+        return _lathe_traits
+    if hasattr(geom, "patches") and hasattr(geom, "sdf"):
+        return _no_traits
+    raise ValueError(f"validation does not know geometry {getattr(geom, '__name__', geom)!r}")
 
 
 # ---------------------------------------------------------------- sampling
@@ -333,13 +337,15 @@ def sample_surface(geom, P: np.ndarray, rng: np.random.Generator) -> tuple[np.nd
             pts[sel] = sample_family(b.family, b.params[which[sel] - start, :, row[sel]].T, rng)[:3].T
         start += len(b.comp)
     count = n.sum(axis=1)
-    if geom is not Cuboid:
+    box = np.flatnonzero(P[:, 3] == 0.0) if geom is BOX else np.zeros(0, dtype=np.int64)
+    if not len(box):
         return pts, count
     f = len(_BOX_FEATURES)
-    feat = (_BOX_FEATURES[None] * P[:, None, :3]).reshape(-1, 3)
-    owner = np.concatenate([row, np.arange(M).repeat(f)])
-    order = np.argsort(owner, kind="stable")  # each box's features after its samples
-    return np.concatenate([pts, feat])[order], count + f
+    feat = (_BOX_FEATURES[None] * P[box, None, :3]).reshape(-1, 3)
+    owner = np.concatenate([row, box.repeat(f)])
+    count = count.copy()
+    count[box] += f
+    return np.concatenate([pts, feat])[np.argsort(owner, kind="stable")], count
 
 
 def _sample_mesh(mesh, rng: np.random.Generator) -> np.ndarray:
@@ -361,8 +367,8 @@ def _mesh_sdf(mesh, x: np.ndarray) -> np.ndarray:
 
 
 def _rect_ring_boxes(P: np.ndarray):
-    """The four boxes of rectangular rings ``P`` (m, 5): sizes and centre offsets, (4m, 3)
-    each, in the order of :meth:`artipg.geometry.RectRing.pieces`."""
+    """The four boxes of rectangular frames ``P`` (m, 5) (ox, oy, depth, ix, iy): sizes
+    and centre offsets, (4m, 3) each: the bands at +y, -y, +x, -x."""
     ox, oy, d, ix, iy = P.T
     bx, by = (ox - ix) / 2, (oy - iy) / 2
     sizes = np.empty((len(P), 4, 3))
