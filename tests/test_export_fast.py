@@ -161,7 +161,7 @@ def test_repeated_primitives_still_write_one_hull_file_each():
         _, files = build_urdf(obj)
         for link in obj.links:
             keys = [(p.geom, p.params) for part in link.parts for p in part.primitives
-                    if p.geom.name in ("torus", "ring", "sphere", "frustum")]
+                    if p.geom.kind == "lathe"]
             repeated += len(keys) - len(set(keys))
             hulls = {k: v for k, v in files.items() if k.startswith(f"meshes/{link.name}_c")}
             assert hulls == _plain_hull_files(link)

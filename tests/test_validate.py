@@ -69,7 +69,7 @@ def test_piece_sdfs_have_the_right_sign_and_distance(prim):
     (for points more than a millimetre off the surface); never farther than the
     nearest sample (a lower bound of the distance: a cut or a wedge only bounds it
     outside); the distance itself, within the sample spacing, for the solids whose
-    SDF is exact (boxes, frusta, full tori) and everywhere inside convex solids."""
+    SDF is exact (all but partial turns of lathes)."""
     from scipy.spatial import cKDTree
 
     from artipg.validate.shapes import Pieces
@@ -85,9 +85,9 @@ def test_piece_sdfs_have_the_right_sign_and_distance(prim):
     d = pieces.sdf(np.zeros(len(x), dtype=np.int64), x)
     nn, _ = cKDTree(S).query(x)
     assert (np.abs(d) <= nn + 1e-9).all()
-    exact = np.ones(len(x), dtype=bool) if prim.geom.name in ("cuboid", "frustum") or \
-        (prim.geom.name == "torus" and p[2] >= 2 * np.pi) else (d < 0) & (prim.geom.name not in ("ring", "torus"))
-    assert exact.sum() > 300 or prim.geom.name in ("ring", "torus")
+    partial = g.kind == "lathe" and p[-3] < 2 * np.pi  # the wedge only bounds the distance
+    exact = np.full(len(x), not partial)
+    assert exact.sum() > 300 or partial
     assert (np.abs(d[exact]) >= nn[exact] - spacing).all()
     far = np.abs(d) > 1e-3
     assert (d[far] > 0).sum() > 100 and (d[far] < 0).sum() > 100

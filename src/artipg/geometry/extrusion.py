@@ -64,7 +64,7 @@ class Extrusion(Family):
         return (np.concatenate(p0, axis=1).transpose(1, 0, 2), np.concatenate(p1, axis=1).transpose(1, 0, 2),
                 np.concatenate(b, axis=1).T)
 
-    def patches(self, P):
+    def _patches(self, P):
         P = np.atleast_2d(np.asarray(P, dtype=float))
         h, k = P[:, -2], P[:, -1]
         p0, p1, b = self._segs(P)
@@ -97,9 +97,10 @@ class Extrusion(Family):
         return out
 
     def _cap_tris(self, P):
-        T = row_triangles(P[:, :-2], lambda row: [l[:, :2] for l in self.loops(np.append(row, (0.0, 0.0)))])
-        t = T.shape[1]
         V = np.concatenate([l[..., :2] for l in _loop_arrays(self.key, P)], axis=1)  # (M, v, 2)
+        T = row_triangles(P[:, :-2], lambda row: [l[:, :2] for l in self.loops(np.append(row, (0.0, 0.0)))],
+                          V, self.key, self.__dict__.setdefault("_tri", {}))
+        t = T.shape[1]
         rows = np.arange(len(P))[:, None]
         A, B, C = (V[rows, T[:, :, j]].transpose(1, 0, 2) for j in range(3))
         h, k = P[:, -2], P[:, -1]
@@ -160,10 +161,18 @@ class Extrusion(Family):
         return np.minimum(np.maximum(d2, dz), 0.0) + np.hypot(np.maximum(d2, 0.0), np.maximum(dz, 0.0))
 
     def bounds(self, p):
-        b = profile.bounds(self.loops(p)[0])
-        k = float(p[-1])
-        lo, hi = np.minimum(b[0], k * b[0]), np.maximum(b[1], k * b[1])
-        return np.array([[lo[0], lo[1], -p[-2] / 2], [hi[0], hi[1], p[-2] / 2]])
+        return self.bounds_batch(np.asarray(p, dtype=float)[None])[0]
+
+    def bounds_batch(self, P):
+        P = np.asarray(P, dtype=float)
+        b = profile.bounds(P[:, :3 * self.key[0]].reshape(len(P), -1, 3))  # the outer loop's (M, 2, 2)
+        k = P[:, -1:]
+        out = np.empty((len(P), 2, 3))
+        out[:, 0, :2] = np.minimum(b[:, 0], k * b[:, 0])
+        out[:, 1, :2] = np.maximum(b[:, 1], k * b[:, 1])
+        out[:, 1, 2] = P[:, -2] / 2
+        out[:, 0, 2] = -out[:, 1, 2]
+        return out
 
     def _rings(self, p, sections):
         out = []

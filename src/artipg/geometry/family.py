@@ -63,6 +63,10 @@ class Family(GeometryTemplate):
     def param_names(self) -> tuple[str, ...]:  # pragma: no cover - abstract
         raise NotImplementedError
 
+    def _patches(self, P) -> list:  # pragma: no cover - abstract
+        """The cells of rows ``P`` (M, p) (see :meth:`patches`)."""
+        raise NotImplementedError
+
     def regions(self, P) -> list[Region]:
         """Planar faces sampled by rejection (none by default)."""
         return []
@@ -76,6 +80,22 @@ class Family(GeometryTemplate):
         raise NotImplementedError
 
     # ------------------------------------------------------------ shared
+    def patches(self, P) -> list:
+        """The surface of rows ``P`` (M, p) as :class:`artipg.geometry.patches.Patch`
+        blocks. The last rows' blocks are kept (read-only): a table asks for the areas,
+        then the cells, of the same rows."""
+        P = np.atleast_2d(np.asarray(P, dtype=float))
+        key = (P.shape, P.tobytes())
+        last = self.__dict__.get("_last")
+        if last is not None and last[0] == key:
+            return last[1]
+        blocks = self._patches(P)
+        for b in blocks:
+            b.area.flags.writeable = False
+            b.params.flags.writeable = False
+        self._last = (key, blocks)
+        return blocks
+
     def component_areas(self, P) -> np.ndarray:
         P = np.atleast_2d(np.asarray(P, dtype=float))
         C = self.n_components()
@@ -189,11 +209,31 @@ def triangulate(rings: list[np.ndarray]) -> np.ndarray:
     return T
 
 
-def row_triangles(P: np.ndarray, rings_of) -> np.ndarray:
+def row_triangles(P: np.ndarray, rings_of, V: np.ndarray | None = None, sizes=(), memo: dict | None = None
+                  ) -> np.ndarray:
     """Triangles (M, t, 3) of the polygon ``rings_of(p)`` of every row of ``P`` (M, p),
     triangulated once per distinct row and padded with degenerate (0, 0, 0) triangles
     to the largest count (n - 2 for a simple n-gon; fewer if earcut drops degenerate
-    ones)."""
+    ones).
+
+    With the rows' ring vertices ``V`` (M, v, 2) (rings of ``sizes`` vertices, one after
+    the other) and a ``memo`` dict, one triangulation kept in the memo serves every row
+    it is valid for (all its triangles counter-clockwise and their areas summing to
+    the polygon's: the common case of rows of one shape), without earcut per row."""
+    if V is not None and memo is not None:
+        T0 = memo.get("T")
+        if T0 is None:
+            T0 = memo["T"] = triangulate(rings_of(P[0]))
+        A, B, C = V[:, T0[:, 0]], V[:, T0[:, 1]], V[:, T0[:, 2]]
+        cr = (B[..., 0] - A[..., 0]) * (C[..., 1] - A[..., 1]) - (B[..., 1] - A[..., 1]) * (C[..., 0] - A[..., 0])
+        area, s0 = np.zeros(len(V)), 0
+        for n in sizes:  # shoelace of each ring (holes clockwise: negative)
+            R = V[:, s0:s0 + n]
+            R1 = np.roll(R, -1, axis=1)
+            area += (R[..., 0] * R1[..., 1] - R1[..., 0] * R[..., 1]).sum(axis=1)
+            s0 += n
+        if (cr > 0).all() and np.allclose(cr.sum(axis=1), area, rtol=1e-9, atol=0.0):
+            return np.broadcast_to(T0, (len(V),) + T0.shape)
     U, inv = np.unique(P, axis=0, return_inverse=True)
     Ts = [triangulate(rings_of(p)) for p in U]
     t = max(len(x) for x in Ts)

@@ -29,7 +29,7 @@ from artipg.geometry import profile
 from artipg.geometry.base import TWO_PI, CollisionPiece, Primitive, convex_hull, wedge_sdf
 from artipg.geometry.family import Family, Region, convex_pieces, rejection_region, row_triangles, triangulate, weld
 from artipg.geometry.patches import sectors, tris
-from artipg.geometry.revolve import _arc_bounds, revolve_arrays, sector_hulls
+from artipg.geometry.revolve import arc_bounds, revolve_arrays, sector_hulls
 from artipg.geometry.revolved import cells
 from artipg.geometry.transforms import IDENTITY
 
@@ -59,7 +59,7 @@ class Lathe(Family):
         V = P[:, :4 * n].reshape(len(P), n, 4)
         return V, P[:, 4 * n], P[:, 4 * n + 1:4 * n + 3]
 
-    def patches(self, P):
+    def _patches(self, P):
         P = np.atleast_2d(np.asarray(P, dtype=float))
         V, arc, caps = self._split(P)
         arc = np.minimum(arc, TWO_PI)
@@ -96,7 +96,8 @@ class Lathe(Family):
     def _end_tris(self, V, arc, caps):
         """The flat ends of partial turns of polygonal profiles as triangles (comps n, n+1)."""
         n = self.key
-        T = row_triangles(V.reshape(len(V), -1), lambda row: [row.reshape(n, 4)[:, :2]])
+        T = row_triangles(V.reshape(len(V), -1), lambda row: [row.reshape(n, 4)[:, :2]], V[..., :2], (n,),
+                          self.__dict__.setdefault("_tri", {}))
         part = (arc < _FULL).astype(float)
         A, B, C = (V[np.arange(len(V))[:, None], T[:, :, k], :2].transpose(1, 0, 2) for k in range(3))
         out = []
@@ -146,8 +147,12 @@ class Lathe(Family):
         return np.maximum(d, wedge_sdf(x, min(p[-3], TWO_PI)))
 
     def bounds(self, p):
-        b = profile.bounds(self.loop(p))
-        return _arc_bounds(max(b[0, 0], 0.0), b[1, 0], min(p[-3], TWO_PI), b[0, 1], b[1, 1])
+        return self.bounds_batch(np.asarray(p, dtype=float)[None])[0]
+
+    def bounds_batch(self, P):
+        V, arc, _ = self._split(np.asarray(P, dtype=float))
+        b = profile.bounds(V[..., :3])  # (M, 2, 2) in (ρ, z)
+        return arc_bounds(np.maximum(b[:, 0, 0], 0.0), b[:, 1, 0], np.minimum(arc, TWO_PI), b[:, 0, 1], b[:, 1, 1])
 
     def _poly(self, p, sections):
         poly = profile.polygonise(self.loop(p), sections)

@@ -240,20 +240,26 @@ def polygonise(loop, sections: int = 32) -> np.ndarray:
 
 
 def bounds(loop) -> np.ndarray:
-    """Exact bounding box (2, 2) of a loop: vertices plus the axis extremes of arcs that
-    their sweep passes."""
+    """Exact bounding box (2, 2) of a loop (n, 3): vertices plus the axis extremes of
+    arcs that their sweep passes; loops (..., n, 3) give boxes (..., 2, 2)."""
     loop = np.asarray(loop, dtype=float)
     p0, p1, b = segments(loop)
-    pts = [p0]
+    lo, hi = p0.min(axis=-2), p0.max(axis=-2)
+    arcs = b != 0.0
+    if not arcs.any():
+        return np.stack([lo, hi], axis=-2)
     c, rad, a0, d = arc_geometry(p0, p1, b)
-    for k in range(4):  # angles 0, π/2, π, 3π/2
-        ang = k * 0.5 * math.pi
-        rel = np.mod((ang - a0) * np.sign(np.where(d == 0, 1.0, d)), TWO_PI)
-        hit = (b != 0.0) & (rel <= np.abs(d))
-        if hit.any():
-            pts.append(c[hit] + rad[hit, None] * np.array([math.cos(ang), math.sin(ang)]))
-    P = np.concatenate(pts)
-    return np.stack([P.min(axis=0), P.max(axis=0)])
+    sg = np.sign(np.where(d == 0, 1.0, d))
+    for k in range(4):  # angles 0, π/2, π, 3π/2: +x, +y, -x, -y
+        rel = np.mod((k * 0.5 * math.pi - a0) * sg, TWO_PI)
+        hit = arcs & (rel <= np.abs(d))
+        ax, s = k % 2, 1.0 if k < 2 else -1.0
+        ext = c[..., ax] + s * np.where(hit, rad, 0.0)
+        if s > 0:
+            hi[..., ax] = np.maximum(hi[..., ax], np.where(hit, ext, -np.inf).max(axis=-1))
+        else:
+            lo[..., ax] = np.minimum(lo[..., ax], np.where(hit, ext, np.inf).min(axis=-1))
+    return np.stack([lo, hi], axis=-2)
 
 
 def has_arcs(loops) -> bool:

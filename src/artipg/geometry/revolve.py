@@ -133,8 +133,9 @@ def _turn_boxes(r, z0, z1):
     return out
 
 
-def _arc_bounds_batch(r_lo, r_hi, arc, z0, z1):
-    """Vectorised :func:`_arc_bounds` over rows; returns (M, 2, 3)."""
+def arc_bounds(r_lo, r_hi, arc, z0, z1):
+    """Bounding boxes (M, 2, 3) of annular sectors r_lo..r_hi, 0..arc (M,), extruded
+    over z0..z1."""
     if arc.min() >= FULL - 1e-9:  # full turns (the common case)
         return _turn_boxes(r_hi, z0, z1)
     M = len(arc)

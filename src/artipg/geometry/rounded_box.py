@@ -73,7 +73,7 @@ class RoundedBox(Family):
     def n_components(self):
         return 8
 
-    def patches(self, P):
+    def _patches(self, P):
         # every cell parameter is affine in (sx, sy, sz, r): one matrix product per block
         # (tables compiled once from :func:`_blocks`, the definition); areas in closed form
         P = np.atleast_2d(np.asarray(P, dtype=float))

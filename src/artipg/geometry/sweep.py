@@ -68,7 +68,7 @@ class Sweep(Family):
                 s = s + A * np.abs(B)
         return out, np.stack([x, np.zeros(M), z]), a
 
-    def patches(self, P):
+    def _patches(self, P):
         P = np.atleast_2d(np.asarray(P, dtype=float))
         r = P[:, 0]
         pieces, end, a_end = self.pieces(P)
