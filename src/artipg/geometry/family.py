@@ -21,7 +21,7 @@ from typing import Callable, ClassVar, NamedTuple
 
 import numpy as np
 
-from artipg.geometry.base import GeometryTemplate, convex_hull, pick
+from artipg.geometry.base import GeometryTemplate, pick
 from artipg.geometry.patches import sample_family
 
 
@@ -109,12 +109,6 @@ class Family(GeometryTemplate):
     def n_components(self) -> int:  # pragma: no cover - abstract
         raise NotImplementedError
 
-    def area(self, P):
-        return self.component_areas(P).sum(axis=1)
-
-    def sample(self, P, rng):
-        return self.sample_components(P, pick(self.component_areas(P), rng), rng)
-
     def sample_components(self, P, comp, rng):
         """One area-uniform point and outward normal per row of ``P`` on component
         ``comp`` (k,): each point picks a cell (or region) of its component by area."""
@@ -162,26 +156,6 @@ class Family(GeometryTemplate):
                 out[:, sel] = r.draw(P[0], len(sel), rng)
             start += 1
         return out[:3].T, out[3:].T
-
-    def bounds_batch(self, P):
-        return np.stack([self.bounds(p) for p in P]) if len(P) else np.zeros((0, 2, 3))
-
-    def mesh(self, p, sections: int = 32):
-        import trimesh
-
-        return trimesh.Trimesh(*self.mesh_arrays(p, sections), process=False)
-
-    def collision(self, p):
-        from artipg.geometry.base import CollisionPiece
-
-        V, F = convex_hull(self.mesh_arrays(p, sections=24)[0])
-        return [CollisionPiece("mesh", vertices=V, faces=F)]
-
-    def inside(self, p, x):
-        return self.sdf(p, x) < 0.0
-
-    def solid_params(self, p):
-        return tuple(p)
 
 
 def weld(V: np.ndarray, F: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
