@@ -19,10 +19,12 @@ Thin constructors: :func:`prism` (regular n-gon), :func:`tri_prism` (wedge),
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from artipg.geometry import profile
-from artipg.geometry.base import CollisionPiece, Primitive, convex_hull
+from artipg.geometry.base import TWO_PI, CollisionPiece, Primitive, convex_hull
 from artipg.geometry.family import Family, Region, convex_pieces, rejection_region, row_triangles, triangulate, weld
 from artipg.geometry.patches import block
 from artipg.geometry.revolved import cells
@@ -287,19 +289,42 @@ def prism(r: float, h: float, n: int, pose: np.ndarray = IDENTITY, role: str = "
     along z, centred; the first vertex at angle π/n (a square prism is axis-aligned)."""
     if not 3 <= n <= MAX_SIDES:
         raise ValueError(f"prism needs 3..{MAX_SIDES} sides, got {n}")
-    return extrusion([profile.regular_polygon(r, n)], h, pose=pose, role=role)
+    n, r = int(n), float(r)
+    row = []
+    for k in range(n):  # profile.regular_polygon, counter-clockwise, written out
+        a = math.pi / n + TWO_PI * k / n
+        row += (r * math.cos(a), r * math.sin(a), 0.0)
+    return _counter_clockwise((n,), tuple(row) + (float(h), 1.0), pose, role)
 
 
 def tri_prism(w: float, t: float, a: float, depth: float, pose: np.ndarray = IDENTITY, role: str = "") -> Primitive:
     """Triangular prism (wedge): the triangle (-w/2, 0), (w/2, 0), (a, t) in the x-y
     plane extruded ``depth`` along z, centred on z = 0."""
-    return extrusion([profile.polygon([[-w / 2, 0.0], [w / 2, 0.0], [a, t]])], depth, pose=pose, role=role)
+    if not (w > 0 and t > 0):  # the clockwise triangles: the general constructor orients them
+        return extrusion([profile.polygon([[-w / 2, 0.0], [w / 2, 0.0], [a, t]])], depth, pose=pose, role=role)
+    w, t, a = float(w), float(t), float(a)
+    return _counter_clockwise((3,), (-w / 2, 0.0, 0.0, w / 2, 0.0, 0.0, a, t, 0.0, float(depth), 1.0), pose, role)
 
 
 def rect_ring(ox, oy, depth, ix, iy, pose: np.ndarray = IDENTITY, role: str = "") -> Primitive:
     """Rectangular frame: an ``ox`` x ``oy`` rectangle with a centred ``ix`` x ``iy``
     hole, extruded ``depth`` along z and centred (a door frame, a window sash)."""
-    return extrusion([profile.rectangle(ox, oy), profile.rectangle(ix, iy)], depth, pose=pose, role=role)
+    x, y, u, v = float(ox) / 2, float(oy) / 2, float(ix) / 2, float(iy) / 2
+    # profile.rectangle(ox, oy) counter-clockwise, then the hole clockwise, written out
+    return _counter_clockwise((4, 4), (x, -y, 0.0, x, y, 0.0, -x, y, 0.0, -x, -y, 0.0,
+                                       -u, -v, 0.0, -u, v, 0.0, u, v, 0.0, u, -v, 0.0, float(depth), 1.0), pose, role)
+
+
+_FAMILIES: dict = {}
+
+
+def _counter_clockwise(key: tuple, params: tuple, pose, role) -> Primitive:
+    """An extrusion primitive of a row whose loops the caller built oriented (the thin
+    constructors: no orientation test, no arrays; they run dozens of times per object)."""
+    geom = _FAMILIES.get(key)
+    if geom is None:
+        geom = _FAMILIES[key] = Extrusion(key)
+    return tuple.__new__(Primitive, (geom, params, pose, role))
 
 
 def frame_dims(prim: Primitive) -> tuple | None:

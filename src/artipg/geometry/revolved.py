@@ -108,9 +108,11 @@ def _arc_fraction(cr, R, a0, d, H1, u):
         lo[todo] = np.where(g < 0, tt, lo[todo])
         hi[todo] = np.where(g > 0, tt, hi[todo])
         nt = tt - g / np.where(gp > 0, gp, 1.0)
-        ok = (gp > 0) & (nt > lo[todo]) & (nt < hi[todo])
+        # a step onto a bracket end is kept: near the root, rounding puts it there, and
+        # bisecting instead would walk the whole bracket down (tens of steps)
+        ok = (gp > 0) & (nt >= lo[todo]) & (nt <= hi[todo])
         nt = np.where(ok, nt, 0.5 * (lo[todo] + hi[todo]))
-        done = np.abs(nt - tt) <= 1e-15
+        done = (np.abs(nt - tt) <= 1e-15) | (g == 0.0)
         t[todo] = nt
         todo = todo[~done]
     return t
