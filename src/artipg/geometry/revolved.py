@@ -69,22 +69,23 @@ def cells(comp, o, e1, e3, r0, z0, r1, z1, b, arc, scale=1.0):
 def _profile_point(q, u):
     """(ρ, z, nρ, nz) (k,) each: the point at area fraction ``u`` of each cell's segment."""
     r0, z0, r1, z1, b = q[9], q[10], q[11], q[12], q[13]
-    straight, c, R, a0, d, H1 = _segment_terms(r0, z0, r1, z1, b)
     # straight segments: ρ² is uniform (as the band family), the slant fraction from it
+    dr, dz = r1 - r0, z1 - z0
     rho = np.sqrt(r0 * r0 + u * (r1 * r1 - r0 * r0))
     s = u * (r0 + r1) / (rho + r0 + 1e-300)
-    L = np.hypot(r1 - r0, z1 - z0)
+    L = np.hypot(dr, dz)
     Ls = np.where(L > 0, L, 1.0)
-    r, z = r0 + s * (r1 - r0), z0 + s * (z1 - z0)
-    nr, nz = (z1 - z0) / Ls, -(r1 - r0) / Ls
-    arcs = np.flatnonzero(~straight)
+    r, z = r0 + s * dr, z0 + s * dz
+    nr, nz = dz / Ls, -dr / Ls
+    arcs = np.flatnonzero(b)
     if len(arcs):
-        t = _arc_fraction(c[arcs, 0], R[arcs], a0[arcs], d[arcs], H1[arcs], u[arcs])
-        a = a0[arcs] + d[arcs] * t
+        _, c, R, a0, d, H1 = _segment_terms(r0[arcs], z0[arcs], r1[arcs], z1[arcs], b[arcs])
+        t = _arc_fraction(c[:, 0], R, a0, d, H1, u[arcs])
+        a = a0 + d * t
         ca, sa = np.cos(a), np.sin(a)
-        sg = np.sign(d[arcs])
-        r[arcs] = c[arcs, 0] + R[arcs] * ca
-        z[arcs] = c[arcs, 1] + R[arcs] * sa
+        sg = np.sign(d)
+        r[arcs] = c[:, 0] + R * ca
+        z[arcs] = c[:, 1] + R * sa
         nr[arcs] = sg * ca
         nz[arcs] = sg * sa
     return r, z, nr, nz
@@ -93,8 +94,14 @@ def _profile_point(q, u):
 def _arc_fraction(cr, R, a0, d, H1, u):
     """Fractions t (k,) in [0, 1] with F(t) = (cr δ t + R (sin(a0 + δ t) - sin a0)) / H1 = u:
     Newton steps kept inside the bracket (bisection otherwise); F is increasing as the
-    arc stays at ρ >= 0."""
+    arc stays at ρ >= 0. Arcs centred on the axis (sphere zones, cr = 0) start from
+    the zone's closed form, sin(a0 + δ t) linear in u, so Newton only confirms it."""
     t = u.copy()
+    zone = np.abs(cr) <= 1e-12 * R
+    if zone.any():
+        sa0 = np.sin(a0[zone])
+        a = np.arcsin(np.clip(sa0 + u[zone] * (np.sin(a0[zone] + d[zone]) - sa0), -1.0, 1.0))
+        t[zone] = np.clip((a - a0[zone]) / d[zone], 0.0, 1.0)
     lo, hi = np.zeros_like(u), np.ones_like(u)
     Hs = np.where(H1 != 0, H1, 1.0)
     todo = np.arange(len(u))
@@ -129,7 +136,10 @@ def place_revolved(q: np.ndarray, u: np.ndarray, v: np.ndarray, out: np.ndarray 
     th = v * q[14]
     ct, st = np.cos(th), np.sin(th)
     o, e1, e3 = q[0:3], q[3:6], q[6:9]
-    e2 = np.cross(e3, e1, axis=0)
+    e2 = np.empty_like(e1)  # e3 x e1, rows
+    e2[0] = e3[1] * e1[2] - e3[2] * e1[1]
+    e2[1] = e3[2] * e1[0] - e3[0] * e1[2]
+    e2[2] = e3[0] * e1[1] - e3[1] * e1[0]
     radial = ct * e1 + st * e2
     out[0:3] = o + r * radial + z * e3
     out[3:6] = nr * radial + nz * e3
