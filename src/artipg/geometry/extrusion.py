@@ -76,16 +76,15 @@ class Extrusion(Family):
         comp = np.arange(c)
         straight = (b == 0).astype(float)
         z0 = -h / 2
-        # side trapezoid A B C D = (p0, z0) (p1, z0) (k p1, z1) (k p0, z1) as triangles ABC, ACD
-        A = (p0[..., 0], p0[..., 1], z0)
-        AB = (p1[..., 0] - p0[..., 0], p1[..., 1] - p0[..., 1], 0.0 * z0)
-        AC = (k * p1[..., 0] - p0[..., 0], k * p1[..., 1] - p0[..., 1], h)
-        AD = (k * p0[..., 0] - p0[..., 0], k * p0[..., 1] - p0[..., 1], h)
-        nx, ny, nz = AB[1] * AD[2] - AB[2] * AD[1], AB[2] * AD[0] - AB[0] * AD[2], AB[0] * AD[1] - AB[1] * AD[0]
-        nn = np.sqrt(nx * nx + ny * ny + nz * nz)
-        nn = np.where(nn > 0, nn, 1.0)
-        N = (nx / nn, ny / nn, nz / nn)
-        out = [_tris(comp, A, AB, AC, N, straight), _tris(comp, A, AC, AD, N, straight)]
+        if (k == 1.0).all():  # straight sides are rectangles: one cell each
+            A = (p0[..., 0], p0[..., 1], z0)
+            E = (p1[..., 0] - p0[..., 0], p1[..., 1] - p0[..., 1])
+            L = np.hypot(*E)
+            L = np.where(L > 0, L, 1.0)
+            out = [block("rect", comp, np.hypot(*E) * h * straight, *A, *E, 0.0, 0.0, 0.0, h,
+                         E[1] / L, -E[0] / L, 0.0)]
+        else:
+            out = self._tapered_sides(comp, p0, p1, h, k, straight)
         if not (b != 0).any():
             return out + self._cap_tris(P)
         # arc sides: the vertical segment at the arc's radius revolved about its centre
@@ -97,6 +96,21 @@ class Extrusion(Family):
         out.append(cells(comp, (cen[..., 0], cen[..., 1], z0), e1, (0.0, 0.0, 1.0), Rf,
                          np.where(pos, 0.0, h), Rf, np.where(pos, h, 0.0), 0.0, np.abs(d), scale=1.0 - straight))
         return out
+
+    @staticmethod
+    def _tapered_sides(comp, p0, p1, h, k, straight):
+        """The sides of straight segments of tapered rows as two triangle cells each."""
+        z0 = -h / 2
+        # side trapezoid A B C D = (p0, z0) (p1, z0) (k p1, z1) (k p0, z1) as triangles ABC, ACD
+        A = (p0[..., 0], p0[..., 1], z0)
+        AB = (p1[..., 0] - p0[..., 0], p1[..., 1] - p0[..., 1], 0.0 * z0)
+        AC = (k * p1[..., 0] - p0[..., 0], k * p1[..., 1] - p0[..., 1], h)
+        AD = (k * p0[..., 0] - p0[..., 0], k * p0[..., 1] - p0[..., 1], h)
+        nx, ny, nz = AB[1] * AD[2] - AB[2] * AD[1], AB[2] * AD[0] - AB[0] * AD[2], AB[0] * AD[1] - AB[1] * AD[0]
+        nn = np.sqrt(nx * nx + ny * ny + nz * nz)
+        nn = np.where(nn > 0, nn, 1.0)
+        N = (nx / nn, ny / nn, nz / nn)
+        return [_tris(comp, A, AB, AC, N, straight), _tris(comp, A, AC, AD, N, straight)]
 
     def _cap_tris(self, P):
         V = np.concatenate([l[..., :2] for l in _loop_arrays(self.key, P)], axis=1)  # (M, v, 2)
@@ -117,7 +131,7 @@ class Extrusion(Family):
 
     def regions(self, P):
         P = np.atleast_2d(np.asarray(P, dtype=float))
-        if not (self._segs(P)[2] != 0).any():
+        if not P[:, 2:3 * sum(self.key):3].any():  # no arcs
             return []
         area = sum(profile.loop_area(L) for L in _loop_arrays(self.key, P))
         out = []

@@ -203,10 +203,10 @@ def row_triangles(P: np.ndarray, rings_of, V: np.ndarray | None = None, sizes=()
         area, s0 = np.zeros(len(V)), 0
         for n in sizes:  # shoelace of each ring (holes clockwise: negative)
             R = V[:, s0:s0 + n]
-            R1 = np.roll(R, -1, axis=1)
+            R1 = np.concatenate([R[:, 1:], R[:, :1]], axis=1)
             area += (R[..., 0] * R1[..., 1] - R1[..., 0] * R[..., 1]).sum(axis=1)
             s0 += n
-        if (cr > 0).all() and np.allclose(cr.sum(axis=1), area, rtol=1e-9, atol=0.0):
+        if (cr > 0).all() and (np.abs(cr.sum(axis=1) - area) <= 1e-9 * np.abs(area)).all():
             return np.broadcast_to(T0, (len(V),) + T0.shape)
     U, inv = np.unique(P, axis=0, return_inverse=True)
     Ts = [triangulate(rings_of(p)) for p in U]
