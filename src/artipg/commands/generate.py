@@ -64,6 +64,8 @@ def register(app: typer.Typer) -> None:
         validate: bool = typer.Option(True, "--validate/--no-validate",
                                       help="Check penetration, floating parts and joint sweeps; repair failures."),
         sim: bool = typer.Option(False, "--sim", help="Also require the pybullet / MuJoCo checks (slower)."),
+        shards: int = typer.Option(0, "--shards", help="Also pack points and annotations into WebDataset-style tar "
+                                                       "shards of N objects in OUT/shards/ (0: none)."),
     ) -> None:
         """Generate objects into OUT/<category>/<seed>/ and index them in OUT/index.jsonl.
 
@@ -84,6 +86,8 @@ def register(app: typer.Typer) -> None:
             fail(f"--views must be >= 0, got {views}")
         if workers < 1:
             fail(f"--workers must be at least 1, got {workers}")
+        if shards < 0:
+            fail(f"--shards must be >= 0, got {shards}")
         cats = resolve_categories(category)
         _check_out_dir(out)
         for c in cats:
@@ -96,6 +100,8 @@ def register(app: typer.Typer) -> None:
         if stopped:
             typer.echo(f"interrupted: {_written(counts)} written, re-run to resume", err=True)
             raise typer.Exit(130)
+        if shards:
+            _write_shards(out, shards)
         if counts["error"]:
             raise typer.Exit(1)
 
@@ -103,17 +109,29 @@ def register(app: typer.Typer) -> None:
     def index(
         out: Path = typer.Argument(..., help="Output folder of 'artipg generate'."),
         hashes: bool = typer.Option(True, "--hashes/--sizes-only", help="Check file hashes, not only sizes."),
+        shards: int = typer.Option(0, "--shards", help="Also rewrite OUT/shards/ with N objects per shard."),
     ) -> None:
         """Rebuild OUT/index.jsonl from the complete object folders on disk."""
         from artipg.data.index import INDEX_NAME, rebuild_index
 
         if not out.is_dir():
             fail(f"{str(out)!r} is not a folder")
+        if shards < 0:
+            fail(f"--shards must be >= 0, got {shards}")
         rows, bad = rebuild_index(out, hashes=hashes)
         typer.echo(f"indexed {len(rows)} objects in {out / INDEX_NAME}")
         if bad:
             typer.echo(f"{len(bad)} incomplete or damaged folders left out (re-run 'artipg generate' to rebuild "
                        f"them), e.g. {bad[0][0]}: {bad[0][1]}", err=True)
+        if shards:
+            _write_shards(out, shards)
+
+
+def _write_shards(out: Path, per_shard: int) -> None:
+    from artipg.data.shards import SHARD_DIR, write_shards
+
+    paths = write_shards(out, per_shard)
+    typer.echo(f"{len(paths)} shards of up to {per_shard} objects in {out / SHARD_DIR}")
 
 
 def _written(counts: Counter) -> int:
