@@ -10,9 +10,12 @@
 3. Export time per object (files built and written) against the object's number of
    parts, over every category: a table of medians per part-count bin.
 4. The cost of checking an existing folder on resume: sizes only, and with hashes.
+5. With ``--dataset`` (needs torch): a training-style loop over
+   :class:`artipg.data.ProceduralDataset` with 2 loader workers, clouds/s, run twice
+   to check that both runs give the same batches.
 
 Usage: python benchmarks/bench_throughput.py [--before ../main/src] [-n 300] [--workers 2]
-       [--repeats 2] [--seeds 20] [--skip-cli]
+       [--repeats 2] [--seeds 20] [--skip-cli] [--dataset]
 """
 
 from __future__ import annotations
@@ -167,6 +170,34 @@ def bench_resume(args, tmp: str) -> None:
     print(f"sizes only {out[False]:.2f} ms / folder, with sha256 {out[True]:.2f} ms / folder")
 
 
+def bench_dataset(args) -> None:
+    import hashlib
+
+    import torch
+    from torch.utils.data import DataLoader
+
+    from artipg.data import ProceduralDataset
+
+    n = args.dataset_n
+    digests, rates = [], []
+    for _ in range(2):
+        ds = ProceduralDataset(artipg.categories(), range(n // len(artipg.categories()) + 1), qpos="random")
+        h = hashlib.sha256()
+        t0, count = CLOCK(), 0
+        for batch in DataLoader(ds, batch_size=16, num_workers=2):
+            x = batch["points"]
+            loss = (x - x.mean(dim=1, keepdim=True)).square().mean()  # stand-in for a model step
+            h.update(x.numpy().tobytes())
+            h.update(batch["semantic"].numpy().tobytes())
+            count += len(x)
+            assert torch.isfinite(loss)
+        rates.append(count / (CLOCK() - t0))
+        digests.append(h.hexdigest())
+    print(f"\n## Training-style loop over ProceduralDataset (all categories, qpos random, 2048 points, "
+          f"batch 16, 2 loader workers, {count} clouds)")
+    print(f"clouds/s: {rates[0]:.1f}, {rates[1]:.1f}; same batches in both runs: {digests[0] == digests[1]}")
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--before", help="src folder of the code to compare with (e.g. another checkout's src)")
@@ -177,6 +208,8 @@ def main() -> None:
     ap.add_argument("--seeds", type=int, default=20, help="seeds per category for the stage and part tables")
     ap.add_argument("--stage-category", default="storage_furniture")
     ap.add_argument("--skip-cli", action="store_true")
+    ap.add_argument("--dataset", action="store_true", help="also time a loop over ProceduralDataset (torch)")
+    ap.add_argument("--dataset-n", type=int, default=440)
     args = ap.parse_args()
     tmp = tempfile.mkdtemp(prefix="artipg-bench-")
     try:
@@ -185,6 +218,8 @@ def main() -> None:
         bench_stages(args, tmp)
         bench_parts(args, tmp)
         bench_resume(args, tmp)
+        if args.dataset:
+            bench_dataset(args)
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
 

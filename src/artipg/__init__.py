@@ -44,9 +44,10 @@ def generate(category: str, seed: int = 0, overrides: dict | None = None, valida
     validate : bool
         Check the object (penetration, floating parts, joint sweeps) and repair it
         when a check fails (:func:`artipg.validate.generate_valid`): the object
-        ``artipg generate`` writes, whose validation report is ``obj.report``.
-        Off by default, so a plain call stays a sub-millisecond draw with an empty
-        ``obj.report``; a valid object is the same with or without it.
+        ``artipg generate`` writes, with its validation report (checks, repair log)
+        in ``obj.report``. Off by default, so a plain call stays a sub-millisecond
+        draw with an empty ``obj.report``; an object that passes its checks has the
+        same geometry either way, one that fails is only repaired with ``validate``.
     simulate : bool
         With ``validate``, also require the pybullet / MuJoCo checks (the CLI's ``--sim``).
 
