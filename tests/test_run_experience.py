@@ -209,3 +209,13 @@ def test_datasets_split_seeds_and_match_written_folders(tmp_path):
             assert all(np.array_equal(arrays[k], every[key][k]) for k in arrays)
     moved = items(ProceduralDataset(CAT, [0], qpos="open"))[(CAT, 0)]
     assert not np.array_equal(moved["points"], every[(CAT, 0)]["points"])
+
+
+@pytest.mark.parametrize("args, message", [
+    (("generate", CAT, "--shards", "-1"), "--shards must be >= 0"),
+    (("index", "no/such/folder"), "is not a folder"),
+])
+def test_bad_input_of_new_options_gives_one_line_error(tmp_path, args, message):
+    r = run(*args, *(("--out", str(tmp_path / "o")) if args[0] == "generate" else ()))
+    assert r.returncode != 0 and "Traceback" not in r.stderr + r.stdout
+    assert message in r.stderr and len(r.stderr.strip().splitlines()) == 1
