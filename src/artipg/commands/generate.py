@@ -1,4 +1,4 @@
-"""``artipg categories`` and ``artipg generate``."""
+"""``artipg categories``, ``artipg generate`` and ``artipg index``."""
 
 from __future__ import annotations
 
