@@ -37,7 +37,7 @@ class BuildOptions:
     views : int
         Partial views in ``views.npz`` (0: no file).
     validate, simulate : bool
-        As :func:`artipg.generate`.
+        As :func:`artipg.generate` (``simulate`` only counts with ``validate``).
     overwrite : bool
         Rewrite complete folders too.
     hashes : bool
@@ -100,7 +100,7 @@ def build_one(category: str, seed: int, opts: BuildOptions) -> Outcome:
                 return Outcome(category, seed, "kept", row=index_row(check.annotation, rel))
             status, reason = "rebuilt", check.status
     try:
-        obj = artipg.generate(category, seed, validate=opts.validate, simulate=opts.simulate)
+        obj = artipg.generate(category, seed, validate=opts.validate, simulate=opts.validate and opts.simulate)
         export_object(obj, dest, n_points=opts.n_points, overwrite=True, views=opts.views)
         annotation = json.loads((dest / ANNOTATION_NAME).read_bytes())
     except Exception as e:  # noqa: BLE001 - one object's failure must not stop a run of thousands
