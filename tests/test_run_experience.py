@@ -117,10 +117,12 @@ def test_index_lists_exactly_what_is_on_disk(tmp_path):
     assert [r["path"] for r in read_index(out)] == ["bucket/7", f"{CAT}/0", f"{CAT}/2"]
 
 
-def test_ctrl_c_stops_cleanly_with_its_line(tmp_path):
+@pytest.mark.parametrize("workers", [1, 2])
+def test_ctrl_c_stops_cleanly_with_its_line(tmp_path, workers):
     out = tmp_path / "o"
     proc = subprocess.Popen([sys.executable, "-m", "artipg.cli", "generate", CAT, "-n", "200", "--out", str(out),
-                             "--workers", "2", "-q"], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+                             "--workers", str(workers), "-q"], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                            text=True)
     objs = out / CAT
     deadline = time.time() + 120
     while time.time() < deadline:
