@@ -20,7 +20,7 @@ from artipg.export.meshes import link_inertial
 
 CATEGORIES = artipg.categories()
 SEEDS = (0, 1)
-ALL = ("urdf", "mjcf")
+ALL = ("urdf", "mjcf", "usd", "glb")
 #: Categories whose MuJoCo behaviour is simulated here (free-standing and fixtures,
 #: hinges and slides); the benchmark reports every category.
 SIM_CATEGORIES = ("storage_furniture", "microwave", "faucet", "dishwasher", "laptop", "door")
@@ -62,8 +62,9 @@ def _expected(obj):
     return links, joints
 
 
-def _compare(obj, links, joints, where: str):
-    """Assert read-back links and joints equal the model's (inertials to 1e-6 relative)."""
+def _compare(obj, links, joints, where: str, tol: float = 1e-6):
+    """Assert read-back links and joints equal the model's (inertials to 1e-6 relative;
+    ``tol`` (m, rad) for origins, axes and limits: USD stores joint frames in float32)."""
     want_links, want_joints = _expected(obj)
     assert set(links) == set(want_links), where
     assert set(joints) == set(want_joints), where
@@ -75,11 +76,11 @@ def _compare(obj, links, joints, where: str):
     for name, (t, p, ch, T, ax, lim) in want_joints.items():
         gt, gp, gch, gT, gax, glim = joints[name]
         assert (gt, gp, gch) == (t, p, ch), (where, name)
-        assert np.abs(np.asarray(gT) - T).max() <= 1e-6, (where, name, gT, T)
+        assert np.abs(np.asarray(gT) - T).max() <= tol, (where, name, gT, T)
         if t != "fixed":
-            assert np.abs(np.asarray(gax) - ax).max() <= 1e-6, (where, name)
+            assert np.abs(np.asarray(gax) - ax).max() <= tol, (where, name)
         if t in ("revolute", "prismatic"):
-            assert np.abs(np.asarray(glim) - lim).max() <= 1e-6, (where, name, glim, lim)
+            assert np.abs(np.asarray(glim) - lim).max() <= tol, (where, name, glim, lim)
 
 
 # ------------------------------------------------------------------ readers
@@ -138,6 +139,53 @@ def _fixed_name(mjcf: Path, child: str) -> str:
     return next(j.name for j in robot.joints if j.child == child)
 
 
+def _usd_matrix(m) -> np.ndarray:
+    return np.array(m, dtype=float).T
+
+
+def _frame(pos, rot) -> np.ndarray:
+    from pxr import Gf
+
+    T = np.eye(4)
+    T[:3, :3] = np.array(Gf.Matrix3d(Gf.Quatd(rot.GetReal(), Gf.Vec3d(rot.GetImaginary()))), dtype=float).T
+    T[:3, 3] = np.array(pos, dtype=float)
+    return T
+
+
+def read_usd(path: Path):
+    from pxr import Gf, Usd, UsdPhysics
+
+    stage = Usd.Stage.Open(str(path))
+    links, joints = {}, {}
+    for prim in stage.Traverse():
+        if prim.HasAPI(UsdPhysics.RigidBodyAPI):
+            mass = UsdPhysics.MassAPI(prim)
+            q = mass.GetPrincipalAxesAttr().Get()
+            R = np.array(Gf.Matrix3d(Gf.Quatd(q.GetReal(), Gf.Vec3d(q.GetImaginary()))), dtype=float).T
+            I = R @ np.diag(np.array(mass.GetDiagonalInertiaAttr().Get(), dtype=float)) @ R.T
+            links[prim.GetName()] = (mass.GetMassAttr().Get(), np.array(mass.GetCenterOfMassAttr().Get()), I)
+    for prim in stage.Traverse():
+        j = UsdPhysics.Joint(prim)
+        if not j or not j.GetBody0Rel().GetTargets():
+            continue
+        parent, child = (r.GetTargets()[0].name for r in (j.GetBody0Rel(), j.GetBody1Rel()))
+        T0 = _frame(j.GetLocalPos0Attr().Get(), j.GetLocalRot0Attr().Get())
+        T1 = _frame(j.GetLocalPos1Attr().Get(), j.GetLocalRot1Attr().Get())
+        origin = T0 @ np.linalg.inv(T1)
+        kind, axis, lim = "fixed", None, None
+        for cls, name, unit in ((UsdPhysics.RevoluteJoint, "revolute", np.pi / 180), (UsdPhysics.PrismaticJoint,
+                                                                                     "prismatic", 1.0)):
+            if prim.IsA(cls):
+                jj = cls(prim)
+                axis = T1[:3, :3] @ np.eye(3)["XYZ".index(jj.GetAxisAttr().Get())]
+                lo, hi = jj.GetLowerLimitAttr().Get(), jj.GetUpperLimitAttr().Get()
+                limited = jj.GetLowerLimitAttr().HasAuthoredValue()
+                kind = name if limited or name == "prismatic" else "continuous"
+                lim = (lo * unit, hi * unit) if limited else None
+        joints[prim.GetName()] = (kind, parent, child, origin, axis, lim)
+    return links, joints
+
+
 # ------------------------------------------------------------------ tests
 
 @pytest.mark.parametrize("seed", SEEDS)
@@ -169,6 +217,106 @@ def test_urdf_and_mjcf_round_trip_the_model(out, category, seed):
     obj = model(category, seed)
     _compare(obj, *read_urdf(f / "mobility.urdf"), "urdf")
     _compare(obj, *read_mjcf(f / "mobility.xml"), "mjcf")
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+@pytest.mark.parametrize("category", CATEGORIES)
+def test_usd_round_trips_the_model(out, category, seed):
+    """Inertials to 1e-6 relative; joint frames, axes and limits within 1e-6 m / rad
+    (float32 attributes: about 1e-7 relative)."""
+    _compare(model(category, seed), *read_usd(folder(out, category, seed) / "mobility.usd"), "usd")
+
+
+def usd_errors(path: Path) -> list[str]:
+    """Messages of USD's own validators (UsdPhysics, UsdGeom, stage metadata) on a file."""
+    from pxr import Usd, UsdValidation
+
+    ctx = UsdValidation.ValidationContext(UsdValidation.ValidationRegistry().GetOrLoadAllValidators())
+    return [e.GetMessage() for e in ctx.Validate(Usd.Stage.Open(str(path)))]
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+@pytest.mark.parametrize("category", CATEGORIES)
+def test_usd_opens_and_its_physics_schema_is_valid(out, category, seed, capfd):
+    from pxr import Usd, UsdGeom, UsdPhysics
+
+    path = folder(out, category, seed) / "mobility.usd"
+    stage = Usd.Stage.Open(str(path))
+    assert UsdGeom.GetStageMetersPerUnit(stage) == 1.0 and UsdGeom.GetStageUpAxis(stage) == "Z"
+    root = stage.GetDefaultPrim()
+    assert root.HasAPI(UsdPhysics.ArticulationRootAPI)
+    assert usd_errors(path) == []
+    obj = model(category, seed)
+    fixed = [p for p in stage.Traverse() if p.IsA(UsdPhysics.FixedJoint) and p.GetName() == "fixed_to_world"]
+    from artipg.validate.sim import category_fixed_base
+
+    assert len(fixed) == int(category_fixed_base(category))
+    n_col = 0
+    for prim in stage.Traverse():
+        if prim.IsA(UsdPhysics.RevoluteJoint):
+            assert prim.HasAPI(UsdPhysics.DriveAPI, "angular") and not prim.HasAPI(UsdPhysics.DriveAPI, "linear")
+        if prim.IsA(UsdPhysics.PrismaticJoint):
+            assert prim.HasAPI(UsdPhysics.DriveAPI, "linear") and not prim.HasAPI(UsdPhysics.DriveAPI, "angular")
+        if prim.HasAPI(UsdPhysics.CollisionAPI):
+            n_col += 1
+            assert "collisions" in str(prim.GetPath()) and UsdGeom.Imageable(prim).ComputePurpose() == "guide"
+            if prim.IsA(UsdGeom.Mesh):
+                assert UsdPhysics.MeshCollisionAPI(prim).GetApproximationAttr().Get() == "convexHull"
+        if prim.IsA(UsdGeom.Mesh) and "visuals" in str(prim.GetPath()):
+            assert not prim.HasAPI(UsdPhysics.CollisionAPI)
+    from artipg.export.meshes import link_collision_pieces
+
+    assert n_col == sum(len(link_collision_pieces(lk)) for lk in obj.links)
+    captured = capfd.readouterr()
+    assert "Warning" not in captured.err and "Error" not in captured.err
+
+
+def test_usd_validators_catch_a_broken_joint(out, tmp_path):
+    """Planted fault: a joint whose child body is missing is reported."""
+    from pxr import Sdf, Usd, UsdPhysics
+
+    stage = Usd.Stage.Open(str(folder(out, "microwave", 0) / "mobility.usd"))
+    joint = next(p for p in stage.Traverse() if p.IsA(UsdPhysics.RevoluteJoint))
+    UsdPhysics.Joint(joint).GetBody1Rel().SetTargets([Sdf.Path("/nowhere")])
+    bad = tmp_path / "bad.usda"
+    stage.GetRootLayer().Export(str(bad))
+    assert usd_errors(bad)
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+@pytest.mark.parametrize("category", CATEGORIES)
+def test_glb_loads_as_one_node_per_link(out, category, seed):
+    import trimesh
+
+    obj = model(category, seed)
+    scene = trimesh.load(folder(out, category, seed) / "mobility.glb")
+    assert isinstance(scene, trimesh.Scene)
+    nodes = set(scene.graph.nodes) - {scene.graph.base_frame}
+    assert nodes == {lk.name for lk in obj.links}
+    edges = scene.graph.transforms.edge_data
+    parents = scene.graph.transforms.parents
+    for j in obj.joints:
+        assert parents[j.child] == j.parent
+        data = edges[(j.parent, j.child)]
+        assert np.abs(data["matrix"] - j.origin).max() < 1e-6
+        extras = data["metadata"]["joint"]
+        assert (extras["type"], extras["parent"], extras["child"]) == (j.type, j.parent, j.child)
+        assert np.abs(np.array(extras["axis"]) - j.axis).max() < 1e-9
+    # the rest pose: node world transforms are the model's link poses
+    poses = obj.link_poses()
+    for i, lk in enumerate(obj.links):
+        assert np.abs(scene.graph.get(lk.name)[0] - poses[i]).max() < 1e-6
+    # vertex colours per semantic part
+    for name, geom in scene.geometry.items():
+        assert geom.visual.kind == "vertex"
+
+
+def test_formats_are_deterministic(tmp_path):
+    obj = artipg.generate("microwave", 3)
+    a = export_object(obj, tmp_path / "a", n_points=0, formats=ALL)
+    b = export_object(artipg.generate("microwave", 3), tmp_path / "b", n_points=0, formats=ALL)
+    for name in ("mobility.xml", "mobility.usd", "mobility.glb"):
+        assert (a / name).read_bytes() == (b / name).read_bytes(), name
 
 
 @pytest.mark.parametrize("category", SIM_CATEGORIES)
