@@ -14,13 +14,13 @@ import artipg
 from artipg.commands import fail
 
 
-def _generate_one(task: tuple[str, int, str, int, bool, int, bool, bool]) -> tuple[str, int, str]:
+def _generate_one(task: tuple) -> tuple[str, int, str]:
     """Worker: generate (validated and repaired unless told not to) and export one
     object; returns (category, seed, status), status "written", "skipped" or
     "invalid" (written, but no candidate passed validation within the budget)."""
     from artipg.export.folder import export_object
 
-    category, seed, out, n_points, overwrite, views, validate, sim = task
+    category, seed, out, n_points, overwrite, views, validate, sim, formats, actuators = task
     dest = Path(out) / category / str(seed)
     if dest.exists() and not overwrite:
         return category, seed, "skipped"
@@ -30,7 +30,8 @@ def _generate_one(task: tuple[str, int, str, int, bool, int, bool, bool]) -> tup
         obj = generate_valid(category, seed, simulate=sim)
     else:
         obj = artipg.generate(category, seed)
-    export_object(obj, dest, n_points=n_points, overwrite=overwrite, views=views)
+    export_object(obj, dest, n_points=n_points, overwrite=overwrite, views=views, formats=formats,
+                  actuators=actuators)
     return category, seed, "written" if obj.report.get("ok", True) else "invalid"
 
 
@@ -81,6 +82,10 @@ def register(app: typer.Typer) -> None:
         validate: bool = typer.Option(True, "--validate/--no-validate",
                                       help="Check penetration, floating parts and joint sweeps; repair failures."),
         sim: bool = typer.Option(False, "--sim", help="Also require the pybullet / MuJoCo checks (slower)."),
+        formats: str = typer.Option(None, "--formats", show_default=False,
+                                    help="Files beside the URDF, of urdf,mjcf,usd,glb [default: urdf,mjcf] "
+                                         "(see docs/formats.md)."),
+        actuators: bool = typer.Option(False, "--actuators", help="Position servos per joint in MJCF and USD."),
     ) -> None:
         """Generate objects into OUT/<category>/<seed>/ (re-running resumes)."""
         from artipg.export.folder import clean_stale_tmp
@@ -95,11 +100,18 @@ def register(app: typer.Typer) -> None:
             fail(f"--views must be >= 0, got {views}")
         if workers < 1:
             fail(f"--workers must be at least 1, got {workers}")
+        from artipg.export.formats import DEFAULT_FORMATS, parse_formats
+
+        try:
+            fmts = parse_formats(formats or DEFAULT_FORMATS)
+        except ValueError as e:
+            fail(str(e))
         cats = resolve_categories(category)
         _check_out_dir(out)
         for c in cats:
             clean_stale_tmp(out / c)
-        tasks = [(c, s, str(out), points, overwrite, views, validate, sim) for c in cats for s in range(seed, seed + n)]
+        tasks = [(c, s, str(out), points, overwrite, views, validate, sim, fmts, actuators)
+                 for c in cats for s in range(seed, seed + n)]
         counts = {"written": 0, "skipped": 0, "invalid": 0}
         columns = (TextColumn("{task.description}"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(),
                    TimeRemainingColumn())
