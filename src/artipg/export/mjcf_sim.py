@@ -19,6 +19,8 @@ import numpy as np
 
 
 def _spec(path, floor: bool, weld: bool = False):
+    """The model of ``path``; ``floor``: plus a floor under its lowest collision point
+    at rest; ``weld``: its free joint removed."""
     import mujoco
 
     spec = mujoco.MjSpec.from_file(str(Path(path)))
@@ -27,8 +29,37 @@ def _spec(path, floor: bool, weld: bool = False):
             if j.type == mujoco.mjtJoint.mjJNT_FREE:
                 spec.delete(j)
     if floor:
-        spec.worldbody.add_geom(type=mujoco.mjtGeom.mjGEOM_PLANE, size=[0, 0, 1])
+        m = spec.compile()
+        d = mujoco.MjData(m)
+        mujoco.mj_forward(m, d)
+        spec.worldbody.add_geom(type=mujoco.mjtGeom.mjGEOM_PLANE, size=[0, 0, 1], pos=[0, 0, lowest_point(m, d)])
     return spec
+
+
+def lowest_point(m, d) -> float:
+    """Lowest world z (m) of the collision geoms (contype > 0) of model ``m`` in state ``d``."""
+    import mujoco
+
+    G = mujoco.mjtGeom
+    low = np.inf
+    for g in np.flatnonzero(m.geom_contype > 0):
+        c, R, s = d.geom_xpos[g], d.geom_xmat[g].reshape(3, 3), m.geom_size[g]
+        t = m.geom_type[g]
+        if t == G.mjGEOM_MESH:
+            k = m.geom_dataid[g]
+            V = m.mesh_vert[m.mesh_vertadr[k]:m.mesh_vertadr[k] + m.mesh_vertnum[k]]
+            z = float((V @ R[2]).min()) + c[2]
+        elif t == G.mjGEOM_BOX:
+            z = c[2] - float(np.abs(R[2]) @ s)
+        elif t == G.mjGEOM_CYLINDER:
+            az = abs(R[2, 2])
+            z = c[2] - s[1] * az - s[0] * math.sqrt(max(0.0, 1.0 - az * az))
+        elif t == G.mjGEOM_SPHERE:
+            z = c[2] - s[0]
+        else:
+            z = c[2] - m.geom_rbound[g]
+        low = min(low, z)
+    return float(low) if np.isfinite(low) else 0.0
 
 
 def _root_pose(d, b: int) -> np.ndarray:
@@ -48,7 +79,8 @@ def rest_drift(path, settle: float = 0.25, seconds: float = 1.0) -> float:
     d.ctrl[:] = 0.0
     mujoco.mj_forward(m, d)
     b = 1
-    g = np.flatnonzero(m.geom_bodyid == b)
+    welded = np.flatnonzero(m.body_weldid == m.body_weldid[b])  # the root and the links fixed to it
+    g = np.flatnonzero(np.isin(m.geom_bodyid, welded) & (m.geom_contype > 0))
     c, r = d.geom_xpos[g], m.geom_rbound[g][:, None]
     lo, hi = (c - r).min(axis=0), (c + r).max(axis=0)
     corners = np.array(np.meshgrid(*zip(lo, hi), indexing="ij")).reshape(3, -1).T
