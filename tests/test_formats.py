@@ -361,3 +361,81 @@ def test_generate_cli_formats_and_bad_format(tmp_path):
     assert {"mobility.urdf", "mobility.xml", "mobility.usd", "mobility.glb"} <= names
     r = subprocess.run(cmd[:-1] + ["urdf,sdf"], capture_output=True, text=True)
     assert r.returncode != 0 and len(r.stderr.strip().splitlines()) == 1 and "sdf" in r.stderr
+
+
+# ------------------------------------------------------------------ convert
+
+def _cli(*args):
+    return subprocess.run([sys.executable, "-m", "artipg.cli", *map(str, args)], capture_output=True, text=True)
+
+
+def test_convert_of_an_artipg_folder_writes_what_generate_writes(out, tmp_path):
+    """The URDF is the one source: converting a URDF-only folder gives the MJCF that
+    generate writes, and a USD with the same physics (its colours are per link then,
+    not per part)."""
+    obj = artipg.generate("storage_furniture", 1)
+    src = folder(out, "storage_furniture", 1)
+    dst = export_object(obj, tmp_path / "o", n_points=0, formats=("urdf",))
+    r = _cli("convert", dst, "--to", "mjcf,usd,glb", "--actuators")
+    assert r.returncode == 0, r.stderr
+    assert (dst / "mobility.xml").read_bytes() == (src / "mobility.xml").read_bytes()
+    _compare(obj, *read_usd(dst / "mobility.usd"), "converted usd")
+    assert not (dst / "collision").exists()  # the exported pieces are convex already
+
+
+def test_convert_decomposes_non_convex_meshes_and_caches_them(tmp_path):
+    """A third-party folder: one link with a non-convex (L-shaped, open-topped box)
+    mesh and no inertial, one hinged lid; CoACD pieces are written once and reused."""
+    pytest.importorskip("coacd")
+    import trimesh
+
+    from artipg.export.meshes import obj_text
+
+    f = tmp_path / "thing"
+    (f / "m").mkdir(parents=True)
+    walls = [trimesh.creation.box(extents=e, transform=trimesh.transformations.translation_matrix(t))
+             for e, t in (((0.3, 0.3, 0.02), (0, 0, 0.01)), ((0.02, 0.3, 0.2), (-0.14, 0, 0.1)),
+                          ((0.02, 0.3, 0.2), (0.14, 0, 0.1)), ((0.3, 0.02, 0.2), (0, -0.14, 0.1)),
+                          ((0.3, 0.02, 0.2), (0, 0.14, 0.1)))]
+    body = trimesh.boolean.union(walls) if trimesh.boolean.engines_available else trimesh.util.concatenate(walls)
+    (f / "m" / "body.obj").write_text(obj_text(body.vertices, body.faces))
+    lid = trimesh.creation.box(extents=(0.3, 0.3, 0.02))
+    (f / "m" / "lid.obj").write_text(obj_text(lid.vertices, lid.faces))
+    (f / "mobility.urdf").write_text("""<?xml version="1.0"?>
+<robot name="thing">
+ <link name="base"><visual><geometry><mesh filename="m/body.obj"/></geometry></visual>
+  <collision><geometry><mesh filename="m/body.obj"/></geometry></collision></link>
+ <link name="lid"><visual><geometry><mesh filename="m/lid.obj"/></geometry></visual>
+  <collision><geometry><mesh filename="m/lid.obj"/></geometry></collision></link>
+ <joint name="hinge" type="revolute"><parent link="base"/><child link="lid"/>
+  <origin xyz="0.15 0 0.21"/><axis xyz="0 1 0"/><limit lower="0" upper="1.5" effort="1" velocity="1"/></joint>
+</robot>
+""")
+    r = _cli("convert", f, "--to", "mjcf,usd", "--actuators", "--check")
+    assert r.returncode == 0, r.stderr
+    pieces = sorted((f / "collision").glob("base_c*.obj"))
+    assert len(pieces) >= 2 and not list((f / "collision").glob("lid_c*"))
+    stamp = [p.stat().st_mtime_ns for p in pieces]
+    r2 = _cli("convert", f, "--to", "mjcf")
+    assert r2.returncode == 0
+    assert [p.stat().st_mtime_ns for p in pieces] == stamp  # cached
+    m = mujoco.MjModel.from_xml_path(str(f / "mobility.xml"))
+    assert m.body_mass[1] > 0.1 and m.ngeom >= 4
+    assert "1/1 joints reach both limits" in r.stdout
+
+
+def test_convert_bad_input_is_one_line_and_writes_nothing(out, tmp_path):
+    empty = tmp_path / "empty"
+    empty.mkdir()
+    r = _cli("convert", empty)
+    assert r.returncode != 0 and len(r.stderr.strip().splitlines()) == 1 and "no URDF" in r.stderr
+    broken = export_object(artipg.generate("faucet", 0), tmp_path / "broken", n_points=0, formats=("urdf",))
+    good = export_object(artipg.generate("faucet", 1), tmp_path / "good", n_points=0, formats=("urdf",))
+    next((broken / "meshes").glob("*.obj")).unlink()
+    before = {p.name for p in tmp_path.rglob("*")}
+    r = _cli("convert", good, broken, "--to", "mjcf,usd")
+    assert r.returncode != 0 and len(r.stderr.strip().splitlines()) == 1 and "missing" in r.stderr
+    assert {p.name for p in tmp_path.rglob("*")} == before  # not even the good folder
+    r = _cli("convert", good, "--to", "mjcf,step")
+    assert r.returncode != 0 and len(r.stderr.strip().splitlines()) == 1 and "step" in r.stderr
+    assert {p.name for p in tmp_path.rglob("*")} == before
