@@ -439,3 +439,21 @@ def test_convert_bad_input_is_one_line_and_writes_nothing(out, tmp_path):
     r = _cli("convert", good, "--to", "mjcf,step")
     assert r.returncode != 0 and len(r.stderr.strip().splitlines()) == 1 and "step" in r.stderr
     assert {p.name for p in tmp_path.rglob("*")} == before
+
+
+@pytest.mark.parametrize("category", SIM_CATEGORIES)
+def test_mjx_accepts_the_model(out, category):
+    """MJX takes the model: every pair of collision geom types has an MJX collision
+    function (cylinders are prisms). Skipped where jax is not installed. MJX's
+    performance warning on hull faces of more than 20 vertices is allowed: revolved
+    primitives' hulls have 24 sections."""
+    pytest.importorskip("jax")
+    mjx = pytest.importorskip("mujoco.mjx")
+    import warnings
+
+    m = mujoco.MjModel.from_xml_path(str(folder(out, category, 0) / "mobility.xml"))
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        warnings.filterwarnings("ignore", message=".*coplanar face with more than 20 vertices")
+        mx = mjx.put_model(m)
+    assert mx.nbody == m.nbody

@@ -105,8 +105,10 @@ def _placed(asset: Asset, g: Geom) -> tuple[np.ndarray, np.ndarray]:
 
 def decompose(V: np.ndarray, F: np.ndarray, seed: int = 0) -> list[tuple[np.ndarray, np.ndarray]]:
     """Convex pieces [(vertices, faces)] of a triangle mesh, by CoACD."""
-    import coacd
-
+    try:
+        import coacd
+    except ImportError:
+        raise ConvertError("non-convex collision meshes need CoACD: pip install coacd") from None
     coacd.set_log_level("error")
     mesh = coacd.Mesh(np.asarray(V, dtype=float), np.asarray(F, dtype=np.int64))
     parts = coacd.run_coacd(mesh, seed=seed, **COACD_OPTIONS)
