@@ -112,6 +112,9 @@ class Asset:
     vertex_labels : dict
         {link name: [(label, vertex count), ...]} semantic labels of the runs of
         vertices of a link's visual mesh (else the link's ``label`` colours it all).
+    excludes : list
+        [(link, link)] pairs that must not collide besides parent and child (links of
+        third-party meshes that overlap at rest).
     """
 
     name: str
@@ -121,6 +124,7 @@ class Asset:
     folder: Path | None = None
     files: dict = field(default_factory=dict)
     vertex_labels: dict = field(default_factory=dict)
+    excludes: list = field(default_factory=list)
 
     def link(self, name: str) -> LinkDesc:
         return self.links[[lk.name for lk in self.links].index(name)]

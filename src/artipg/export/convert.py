@@ -19,6 +19,7 @@ only once all are written.
 
 from __future__ import annotations
 
+import dataclasses
 import hashlib
 import json
 import os
@@ -160,6 +161,32 @@ def convex_collisions(asset: Asset, cache_dir: Path) -> dict[str, str]:
     return new_files
 
 
+#: Penetration (m) at rest above which two links of a third-party folder are kept
+#: from colliding: convex pieces are fatter than the meshes they stand for, and
+#: neighbouring doors would otherwise push each other from the first step.
+OVERLAP_TOL = 1e-3
+
+
+def rest_overlaps(asset: Asset, tol: float = OVERLAP_TOL) -> list[tuple[str, str]]:
+    """[(link, link)] pairs whose collision geoms penetrate deeper than ``tol`` at rest
+    (parent-child pairs, never colliding, aside), found by MuJoCo on the asset's MJCF."""
+    import mujoco
+
+    from artipg.export.mjcf import build_mjcf, mjcf_text
+
+    # root welded to the world: MuJoCo then filters no pair through a free root's weld
+    # group (links fixed to the body would not touch a door hinged on it otherwise)
+    xml = mjcf_text(build_mjcf(dataclasses.replace(asset, fixed_base=True)))
+    files = set(re.findall(r'file="([^"]+)"', xml))
+    data = {f: asset.files[f].encode() if f in asset.files else (asset.folder / f).read_bytes() for f in files}
+    m = mujoco.MjSpec.from_string(xml, assets=data).compile()
+    d = mujoco.MjData(m)
+    mujoco.mj_forward(m, d)
+    name = lambda g: mujoco.mj_id2name(m, mujoco.mjtObj.mjOBJ_BODY, int(m.geom_bodyid[g]))  # noqa: E731
+    pairs = {tuple(sorted((name(c.geom1), name(c.geom2)))) for c in d.contact[:d.ncon] if c.dist < -tol}
+    return sorted(p for p in pairs if p[0] != p[1])
+
+
 def merged_visuals(asset: Asset) -> dict[str, str]:
     """Replace each link's visual meshes by one plain OBJ ``visual/<link>.obj`` (link
     frame; textures dropped, MuJoCo warns on many third-party OBJ files); returns
@@ -247,6 +274,8 @@ def folder_asset(folder: Path, decompose_meshes: bool = True) -> tuple[Asset, di
         pieces.update(merged_visuals(asset))
     if decompose_meshes:
         pieces.update(convex_collisions(asset, folder / "collision"))
+    if not (folder / "annotation.json").is_file():
+        asset.excludes = rest_overlaps(asset)
     missing = {lk.name for lk in robot.links if lk.inertial is None or lk.inertial.mass is None}
     if missing:  # from the convex pieces, then the joint dynamics that follow from them
         estimate = _inertials_from_pieces(asset)

@@ -11,7 +11,8 @@ The body tree follows the URDF's links (body frame = link frame), with
   visual geoms (class ``visual``, group 2, ``contype = conaffinity = 0``, massless);
   cylinders become inline 20-sided prisms (MJX slows down on faces of more than 20 vertices), since MJX collides cylinders only with
   planes, spheres and capsules;
-- ``<contact><exclude>`` for every parent-child pair (touching by construction);
+- ``<contact><exclude>`` for every parent-child pair (touching by construction) and
+  the asset's other excluded pairs (third-party links that overlap at rest);
 - a free joint on the root of a free-standing object; a fixture's root has none, so
   it is welded to the world where it is placed;
 - optionally (``actuators=True``) a position servo per joint, critically damped at
@@ -135,10 +136,11 @@ def build_mjcf(asset: Asset, actuators: bool = False, mesh_prefix: str = "") -> 
             _geom(body, g, f"{lk.name}_visual{k}", "visual", mesh_name)
         for k, g in enumerate(lk.collisions):
             _geom(body, g, f"{lk.name}_c{k}", "collision", mesh_name)
-    if asset.joints:
+    pairs = [(j.parent, j.child) for j in asset.joints] + [tuple(p) for p in asset.excludes]
+    if pairs:
         contact = ET.SubElement(root, "contact")
-        for j in asset.joints:
-            ET.SubElement(contact, "exclude", body1=j.parent, body2=j.child)
+        for a, b in pairs:
+            ET.SubElement(contact, "exclude", body1=a, body2=b)
     if actuators:
         act = ET.SubElement(root, "actuator")
         for j in asset.joints:

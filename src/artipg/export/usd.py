@@ -117,6 +117,8 @@ def build_stage(asset: Asset, actuators: bool = False):
     jbase = base.AppendChild("joints")
     for j in asset.joints:
         _joint(stage, jbase.AppendChild(_name(j.name)), j, paths, actuators)
+    for a, b in asset.excludes:  # PhysX already skips parent-child pairs of an articulation
+        UsdPhysics.FilteredPairsAPI.Apply(stage.GetPrimAtPath(paths[a])).CreateFilteredPairsRel().AddTarget(paths[b])
     if asset.fixed_base:
         fj = UsdPhysics.FixedJoint.Define(stage, jbase.AppendChild("fixed_to_world"))
         fj.CreateBody1Rel().SetTargets([paths[asset.links[0].name]])
