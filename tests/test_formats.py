@@ -457,3 +457,27 @@ def test_mjx_accepts_the_model(out, category):
         warnings.filterwarnings("ignore", message=".*coplanar face with more than 20 vertices")
         mx = mjx.put_model(m)
     assert mx.nbody == m.nbody
+
+
+@pytest.mark.parametrize("category", CATEGORIES)
+def test_urdf_loads_in_sapien_on_cpu(out, category):
+    """SAPIEN (where it installs; physics only, no rendering device needed) builds the
+    articulation with the model's links, degrees of freedom and masses."""
+    import warnings
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # its import warns when the system has no Vulkan
+        sapien = pytest.importorskip("sapien")
+    obj = model(category, 0)
+    scene = sapien.Scene([sapien.physx.PhysxCpuSystem()])
+    builder = scene.create_urdf_loader().load_file_as_articulation_builder(
+        str(folder(out, category, 0) / "mobility.urdf"))
+    for lb in builder.link_builders:
+        lb.visual_records = []  # rendering needs a GPU
+    art = builder.build()
+    assert art.dof == obj.dof
+    mass = {lk.name: lk.mass for lk in art.get_links()}
+    assert set(mass) == {lk.name for lk in obj.links}
+    for lk in obj.links:
+        m = link_inertial(lk, 24, obj.materials)[0]
+        assert abs(mass[lk.name] - m) <= 1e-5 * m  # float32 in PhysX
