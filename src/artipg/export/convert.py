@@ -116,9 +116,56 @@ def decompose(V: np.ndarray, F: np.ndarray, seed: int = 0) -> list[tuple[np.ndar
     return [(np.asarray(v, dtype=float), np.asarray(f, dtype=np.int64)) for v, f in parts]
 
 
+#: A non-convex collision mesh is replaced by its convex hull when no point of the hull
+#: lies farther from the mesh than ``HULL_REL`` of the hull's diagonal or ``HULL_OBJ``
+#: of the object's (small parts: buttons, knobs); the others go to CoACD.
+#: Third-party meshes are mostly soups of nearly convex pieces, one file each, and
+#: CoACD takes tens of seconds even on a button.
+HULL_REL, HULL_OBJ = 0.05, 0.02
+
+#: Thickness (m) given to flat collision meshes (single-sided panels), whose hull has
+#: no volume.
+FLAT_THICKNESS = 1e-3
+
+
+def _diagonal(asset: Asset) -> float:
+    """Diagonal (m) of the bounding box of the object's collision geometry at rest."""
+    poses = asset.link_poses()
+    pts = [np.zeros((1, 3))]
+    for lk in asset.links:
+        T = poses[lk.name]
+        for g in lk.collisions:
+            V, _ = _placed(asset, g)
+            pts.append(V @ T[:3, :3].T + T[:3, 3])
+    P = np.concatenate(pts)
+    return float(np.linalg.norm(P.max(axis=0) - P.min(axis=0)))
+
+
+def hull_fit(V: np.ndarray, F: np.ndarray, tol: float = 0.0) -> tuple[np.ndarray, np.ndarray] | None:
+    """The convex hull (vertices, faces) of a mesh when it stands for the mesh within
+    :data:`HULL_REL` of its diagonal or ``tol`` (m), else None. A flat mesh gets the hull of its
+    vertices moved by half :data:`FLAT_THICKNESS` to either side of its plane."""
+    import trimesh
+
+    c = V.mean(axis=0)
+    n = np.linalg.svd(V - c, full_matrices=False)[2][-1]
+    if np.abs((V - c) @ n).max() < 1e-6:  # flat
+        V = np.concatenate([V + 0.5 * FLAT_THICKNESS * n, V - 0.5 * FLAT_THICKNESS * n])
+    try:
+        hull = trimesh.convex.convex_hull(V)
+    except Exception:  # a degenerate mesh (a line, a point): no collision piece
+        return np.zeros((0, 3)), np.zeros((0, 3), dtype=np.int64)
+    pts = np.concatenate([hull.vertices, hull.triangles_center])
+    _, dist, _ = trimesh.proximity.closest_point(trimesh.Trimesh(V, F, process=False) if len(F) else hull, pts)
+    if dist.max() <= max(HULL_REL * float(np.linalg.norm(hull.extents)), tol):
+        return np.asarray(hull.vertices, dtype=float), np.asarray(hull.faces, dtype=np.int64)
+    return None
+
+
 def convex_collisions(asset: Asset, cache_dir: Path) -> dict[str, str]:
-    """Replace each link's non-convex collision meshes by convex pieces (cached in
-    ``cache_dir``); returns {relative path: OBJ text} of pieces to write."""
+    """Replace each link's non-convex collision meshes by convex pieces: their hulls
+    where these fit (:func:`hull_fit`), CoACD's pieces of the others, cached in
+    ``cache_dir``; returns {relative path: OBJ text} of pieces to write."""
     from artipg.export.meshes import obj_text
 
     cache_file = cache_dir / "cache.json"
@@ -128,6 +175,7 @@ def convex_collisions(asset: Asset, cache_dir: Path) -> dict[str, str]:
         cache = {}
     new_files: dict[str, str] = {}
     rel_dir = cache_dir.relative_to(asset.folder).as_posix()
+    tol = HULL_OBJ * _diagonal(asset)
     for lk in asset.links:
         keep, soup = [], []
         for g in lk.collisions:
@@ -144,12 +192,22 @@ def convex_collisions(asset: Asset, cache_dir: Path) -> dict[str, str]:
             faces.append(F + n)
             n += len(V)
         V, F = np.concatenate(verts), np.concatenate(faces)
-        key = hashlib.sha256(V.round(9).tobytes() + F.tobytes() + repr(sorted(COACD_OPTIONS.items())).encode())
-        key = key.hexdigest()
+        settings = (sorted(COACD_OPTIONS.items()), HULL_REL, round(tol, 9), FLAT_THICKNESS)
+        key = hashlib.sha256(V.round(9).tobytes() + F.tobytes() + repr(settings).encode()).hexdigest()
         names = cache.get(lk.name, {}).get("pieces", [])
         if cache.get(lk.name, {}).get("key") != key or not all((asset.folder / p).is_file() for p in names):
-            names = []
-            for k, (pv, pf) in enumerate(decompose(V, F)):
+            names, pieces, rest = [], [], []
+            for sv, sf in soup:
+                h = hull_fit(sv, sf, tol)
+                (rest.append((sv, sf)) if h is None else pieces.append(h) if len(h[1]) else None)
+            if rest:
+                n, verts, faces = 0, [], []
+                for sv, sf in rest:
+                    verts.append(sv)
+                    faces.append(sf + n)
+                    n += len(sv)
+                pieces += decompose(np.concatenate(verts), np.concatenate(faces))
+            for k, (pv, pf) in enumerate(pieces):
                 rel = f"{rel_dir}/{lk.name}_c{k}.obj"
                 new_files[rel] = obj_text(pv, pf)
                 names.append(rel)
