@@ -43,10 +43,11 @@ TIMESTEP = 0.002
 CYLINDER_SIDES = 20
 
 
-def prism_vertices(radius: float, length: float, sides: int = CYLINDER_SIDES) -> np.ndarray:
+def prism_vertices(radius: float, length: float, sides: int = CYLINDER_SIDES, phase: float = 0.0) -> np.ndarray:
     """Vertices (2 * sides, 3) of a regular prism inscribed in a cylinder of ``radius``
-    and ``length`` (m) along z, centred: it lies within 1.3 % of the radius of it."""
-    a = 2.0 * np.pi * np.arange(sides) / sides
+    and ``length`` (m) along z, centred: it lies within 1.3 % of the radius of it.
+    One face's outward normal points at angle ``phase`` (rad) in the xy-plane."""
+    a = phase + np.pi / sides + 2.0 * np.pi * np.arange(sides) / sides
     ring = np.column_stack([radius * np.cos(a), radius * np.sin(a)])
     return np.concatenate([np.column_stack([ring, np.full(sides, z)]) for z in (-length / 2, length / 2)])
 
@@ -98,10 +99,15 @@ def build_mjcf(asset: Asset, actuators: bool = False, mesh_prefix: str = "") -> 
 
     def mesh_name(g, visual: bool) -> str:
         if g.kind == "cylinder":  # an inline prism (MJX has no cylinder-box or cylinder-mesh collisions)
-            key = ("cylinder", float(g.size[0]), float(g.size[1]))
+            # a face, not an edge, down at rest: a wheel stands on it instead of rocking
+            # (``lk``: the link whose geoms the loop below is writing)
+            down = (poses[lk.name][:3, :3] @ g.pose[:3, :3]).T @ np.array([0.0, 0.0, -1.0])
+            phase = round(float(np.arctan2(down[1], down[0])) if np.hypot(down[0], down[1]) > 1e-9 else 0.0, 6)
+            key = ("cylinder", float(g.size[0]), float(g.size[1]), phase)
             if key not in meshes:
                 meshes[key] = f"c{len(meshes)}"
-                ET.SubElement(assets, "mesh", name=meshes[key], vertex=_f(prism_vertices(*key[1:])),
+                ET.SubElement(assets, "mesh", name=meshes[key],
+                              vertex=_f(prism_vertices(key[1], key[2], CYLINDER_SIDES, phase)),
                               maxhullvert=str(MAX_HULL_VERTICES))
             return meshes[key]
         key = (g.mesh, tuple(g.scale), visual)
@@ -116,6 +122,7 @@ def build_mjcf(asset: Asset, actuators: bool = False, mesh_prefix: str = "") -> 
                 el.set("maxhullvert", str(MAX_HULL_VERTICES))
         return meshes[key]
 
+    poses = asset.link_poses()
     world = ET.SubElement(root, "worldbody")
     bodies = {}
     joint_of = {j.child: j for j in asset.joints}
