@@ -54,9 +54,12 @@ def _check(mjcf: Path) -> str:
     """MuJoCo results of ``mjcf`` as text: rest drift and joints that miss a limit."""
     from artipg.export.mjcf_sim import drive_limits, drive_tolerance, rest_drift
 
-    drift = rest_drift(mjcf)
-    text = f"; rest drift {drift * 1e3:.3g} mm in 1 s"
-    if "<position" in mjcf.read_text():
+    xml = mjcf.read_text()
+    if "<freejoint" in xml:
+        text = f"; rest drift {rest_drift(mjcf) * 1e3:.3g} mm in 1 s"
+    else:
+        text = "; fixture (welded)"
+    if "<position" in xml:
         tol = drive_tolerance(mjcf)
         missed = [k for k, v in drive_limits(mjcf).items() if max(v) > tol[k]]
         text += f"; {len(tol) - len(missed)}/{len(tol)} joints reach both limits"

@@ -200,11 +200,11 @@ def _geom(origin, geometry) -> Geom | None:
     if geometry.mesh is not None:
         s = geometry.mesh.scale
         scale = (1.0, 1.0, 1.0) if s is None else tuple(np.broadcast_to(np.asarray(s, dtype=float), (3,)).tolist())
-        return Geom("mesh", T, mesh=_relative(geometry.mesh.filename), scale=scale)
+        return Geom("mesh", T, mesh=relative_mesh_path(geometry.mesh.filename), scale=scale)
     return None
 
 
-def _relative(filename: str) -> str:
+def relative_mesh_path(filename: str) -> str:
     """A URDF mesh reference (``package://pkg/...``, ``file://...``, relative) as a path
     relative to the folder of the URDF."""
     import re

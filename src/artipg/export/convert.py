@@ -298,7 +298,7 @@ def _inertials_from_pieces(asset: Asset):
 def check_folder(folder: Path):
     """The ``yourdfpy`` robot of the folder's URDF after checking that the URDF exists,
     parses, and that every mesh it names exists; raises :class:`ConvertError`."""
-    from artipg.export.asset import _relative
+    from artipg.export.asset import relative_mesh_path
 
     folder = Path(folder).resolve()
     urdf = find_urdf(folder)
@@ -311,7 +311,7 @@ def check_folder(folder: Path):
     for lk in robot.links:
         for el in [*lk.visuals, *lk.collisions]:
             if el.geometry is not None and el.geometry.mesh is not None:
-                rel = _relative(el.geometry.mesh.filename)
+                rel = relative_mesh_path(el.geometry.mesh.filename)
                 if not (folder / rel).is_file():
                     raise ConvertError(f"{urdf}: mesh {rel} of link {lk.name} is missing")
     return robot

@@ -10,7 +10,6 @@ The node's extras hold its semantic label and the joint that moves it: ``type``,
 
 from __future__ import annotations
 
-import io
 import math
 from functools import lru_cache
 
@@ -69,6 +68,4 @@ def build_scene(asset: Asset):
 
 def glb_bytes(asset: Asset) -> bytes:
     """The bytes of ``mobility.glb`` of ``asset``."""
-    scene = build_scene(asset)
-    buf = io.BytesIO(scene.export(file_type="glb"))
-    return buf.getvalue()
+    return build_scene(asset).export(file_type="glb")
