@@ -20,13 +20,16 @@ from artipg.export.asset import Asset
 
 @lru_cache(maxsize=None)
 def label_color(label: str) -> tuple[float, float, float]:
-    """RGB in [0, 1] of a semantic label (grey for labels outside the vocabulary)."""
+    """RGB in [0, 1] of a semantic label: its vocabulary colour, or for labels outside
+    the vocabulary (third-party folders') one of 32 more picked by a hash of the name."""
+    import zlib
+
     from artipg.viz import palette
     from artipg.vocabulary import LABEL_ID, SEMANTIC_LABELS
 
-    if label not in LABEL_ID:
-        return (0.6, 0.6, 0.6)
-    return tuple(float(c) for c in palette(len(SEMANTIC_LABELS))[LABEL_ID[label]])
+    n = len(SEMANTIC_LABELS)
+    i = LABEL_ID.get(label, n + zlib.crc32(label.encode()) % 32)
+    return tuple(float(c) for c in palette(n + 32)[i])
 
 
 def _rgba(asset: Asset, link, n: int) -> np.ndarray:
