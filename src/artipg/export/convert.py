@@ -2,12 +2,15 @@
 
 Works on artipg's folders and third-party ones (PartNet-Mobility's): the URDF is
 read with ``yourdfpy`` into an :class:`artipg.export.asset.Asset` and written by the
-same writers as ``artipg generate``. Third-party URDFs differ in three ways:
+same writers as ``artipg generate``. For third-party URDFs:
 
-- collision meshes that are not convex (a simulator would fill them with their hull):
-  each link's non-convex collision meshes are decomposed together into convex pieces
-  with CoACD, written to ``collision/<link>_c<k>.obj`` in the folder and reused while
-  the link's meshes are unchanged (``collision/cache.json`` keeps a hash of them);
+- collision meshes that are not convex (a simulator would fill them with their hull)
+  become convex pieces: their own hulls where these fit them (:func:`hull_fit`), the
+  rest of each link's meshes decomposed together by CoACD; the pieces are written to
+  ``collision/<link>_c<k>.obj`` in the folder and reused while the link's meshes are
+  unchanged (``collision/cache.json`` keeps a hash of them);
+- links that overlap at rest never collide (:func:`rest_overlaps`);
+- visual meshes are merged per link into plain OBJ files (:func:`merged_visuals`);
 - no ``<inertial>``: mass properties come from the convex collision pieces, solid, at
   the density of the link's material class (:mod:`artipg.materials`);
 - no dynamics: joint damping follows artipg's own rule (:mod:`artipg.export.urdf`).
@@ -237,7 +240,10 @@ def rest_overlaps(asset: Asset, tol: float = OVERLAP_TOL) -> list[tuple[str, str
     xml = mjcf_text(build_mjcf(dataclasses.replace(asset, fixed_base=True)))
     files = set(re.findall(r'file="([^"]+)"', xml))
     data = {f: asset.files[f].encode() if f in asset.files else (asset.folder / f).read_bytes() for f in files}
-    m = mujoco.MjSpec.from_string(xml, assets=data).compile()
+    try:
+        m = mujoco.MjSpec.from_string(xml, assets=data).compile()
+    except ValueError as e:  # MuJoCo's compiler errors
+        raise ConvertError(f"{asset.folder}: MuJoCo cannot compile the model: {str(e).splitlines()[0]}") from None
     d = mujoco.MjData(m)
     mujoco.mj_forward(m, d)
     name = lambda g: mujoco.mj_id2name(m, mujoco.mjtObj.mjOBJ_BODY, int(m.geom_bodyid[g]))  # noqa: E731
