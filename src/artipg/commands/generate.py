@@ -66,6 +66,10 @@ def register(app: typer.Typer) -> None:
         sim: bool = typer.Option(False, "--sim", help="Also require the pybullet / MuJoCo checks (slower)."),
         shards: int = typer.Option(0, "--shards", help="Also pack points and annotations into WebDataset-style tar "
                                                        "shards of N objects in OUT/shards/ (0: none)."),
+        formats: str = typer.Option(None, "--formats", show_default=False,
+                                    help="Files beside the URDF, of urdf,mjcf,usd,glb [default: urdf,mjcf] "
+                                         "(see docs/formats.md)."),
+        actuators: bool = typer.Option(False, "--actuators", help="Position servos per joint in MJCF and USD."),
     ) -> None:
         """Generate objects into OUT/<category>/<seed>/ and index them in OUT/index.jsonl.
 
@@ -88,13 +92,19 @@ def register(app: typer.Typer) -> None:
             fail(f"--workers must be at least 1, got {workers}")
         if shards < 0:
             fail(f"--shards must be >= 0, got {shards}")
+        from artipg.export.formats import DEFAULT_FORMATS, parse_formats
+
+        try:
+            fmts = parse_formats(formats or DEFAULT_FORMATS)
+        except ValueError as e:
+            fail(str(e))
         cats = resolve_categories(category)
         _check_out_dir(out)
         for c in cats:
             clean_stale_tmp(out / c)
         tasks = [(c, s) for c in cats for s in range(seed, seed + n)]
         opts = BuildOptions(str(out), n_points=points, views=views, validate=validate, simulate=sim,
-                            overwrite=overwrite)
+                            overwrite=overwrite, formats=fmts, actuators=actuators)
         counts, errors, stopped = _run(tasks, opts, out, workers, quiet)
         _summary(counts, errors, out, validate)
         if stopped:

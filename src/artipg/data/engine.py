@@ -42,6 +42,11 @@ class BuildOptions:
         Rewrite complete folders too.
     hashes : bool
         Check hashes, not only sizes, of existing folders.
+    formats : tuple of str, optional
+        Simulator files beside the URDF (default
+        :data:`artipg.export.formats.DEFAULT_FORMATS`).
+    actuators : bool
+        Position servos per joint in MJCF and USD.
     """
 
     out: str
@@ -51,6 +56,8 @@ class BuildOptions:
     simulate: bool = False
     overwrite: bool = False
     hashes: bool = True
+    formats: tuple | None = None
+    actuators: bool = False
 
 
 @dataclass
@@ -101,7 +108,8 @@ def build_one(category: str, seed: int, opts: BuildOptions) -> Outcome:
             status, reason = "rebuilt", check.status
     try:
         obj = artipg.generate(category, seed, validate=opts.validate, simulate=opts.validate and opts.simulate)
-        export_object(obj, dest, n_points=opts.n_points, overwrite=True, views=opts.views)
+        export_object(obj, dest, n_points=opts.n_points, overwrite=True, views=opts.views, formats=opts.formats,
+                      actuators=opts.actuators)
         annotation = json.loads((dest / ANNOTATION_NAME).read_bytes())
     except Exception as e:  # noqa: BLE001 - one object's failure must not stop a run of thousands
         return Outcome(category, seed, "error", f"{type(e).__name__}: {e}")

@@ -229,6 +229,14 @@ def link_inertial(link, sections: int = 24, materials=None) -> tuple[float, np.n
     I1 = np.stack([cp[1] for cp in props])
     coms = (R @ c[:, :, None])[:, :, 0] + T[:, :3, 3]
     inertias = m[:, None, None] * (R @ I1 @ R.transpose(0, 2, 1))
+    return combine_inertials(masses, coms, inertias)
+
+
+def combine_inertials(masses, coms: np.ndarray, inertias: np.ndarray) -> tuple[float, np.ndarray, np.ndarray]:
+    """Mass (kg), centre of mass (3,) and inertia (3, 3) about it of rigidly joined
+    bodies: ``masses`` (n,) kg, ``coms`` (n, 3) and ``inertias`` (n, 3, 3) about their
+    own centres of mass, all in one frame (parallel axis theorem)."""
+    m = np.asarray(masses, dtype=float)
     M = float(sum(masses))
     com = np.sum(m[:, None] * coms, axis=0) / M
     d = coms - com

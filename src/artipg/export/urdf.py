@@ -11,6 +11,7 @@ import xml.etree.ElementTree as ET
 
 import numpy as np
 
+from artipg.export.asset import effective_inertia
 from artipg.export.meshes import link_collision_entries, link_inertial, link_visual_arrays, obj_text
 from artipg.geometry.transforms import matrix_to_rpy
 
@@ -35,13 +36,7 @@ DAMPING_TIME = 0.25
 def joint_damping(jtype: str, axis: np.ndarray, mass: float, com: np.ndarray, inertia: np.ndarray) -> float:
     """Viscous damping of a joint (N*s/m or N*m*s/rad) from its child link's mass
     properties in the joint frame (mass kg, centre of mass (3,), inertia (3, 3) about it)."""
-    a = np.asarray(axis, dtype=float)
-    if jtype == "prismatic":
-        eff = mass
-    else:  # inertia about the joint axis through the joint origin (parallel axis theorem)
-        c = np.asarray(com, dtype=float)
-        eff = float(a @ inertia @ a) + mass * (float(c @ c) - float(a @ c) ** 2)
-    return max(eff / DAMPING_TIME, 1e-6)
+    return max(effective_inertia(jtype, axis, mass, com, inertia) / DAMPING_TIME, 1e-6)
 
 
 def build_urdf(obj, sections: int = 24, visuals: bool = True) -> tuple[ET.Element, dict[str, str]]:
