@@ -201,7 +201,7 @@ def test_mjcf_loads_in_mujoco_without_warning(out, category, seed, capfd, tmp_pa
     assert m.nbody == len(obj.links) + 1
     assert m.nu == obj.dof
     free = m.njnt and m.jnt_type[0] == mujoco.mjtJoint.mjJNT_FREE
-    from artipg.validate.sim import category_fixed_base
+    from artipg.export.annotation import category_fixed_base
 
     assert bool(free) != category_fixed_base(category)
     # visuals never collide, collision geoms do
@@ -248,7 +248,7 @@ def test_usd_opens_and_its_physics_schema_is_valid(out, category, seed, capfd):
     assert usd_errors(path) == []
     obj = model(category, seed)
     fixed = [p for p in stage.Traverse() if p.IsA(UsdPhysics.FixedJoint) and p.GetName() == "fixed_to_world"]
-    from artipg.validate.sim import category_fixed_base
+    from artipg.export.annotation import category_fixed_base
 
     assert len(fixed) == int(category_fixed_base(category))
     n_col = 0

@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+import json
+from pathlib import Path
+
 import numpy as np
 
 import artipg
@@ -38,6 +41,21 @@ def category_fixed_base(name: str) -> bool:
         return bool(getattr(artipg.get_category(name), "fixed_base", False))
     except (KeyError, ValueError):
         return False
+
+
+def annotated_fixed_base(annotation: Path) -> bool:
+    """Whether the object of ``annotation`` (an ``annotation.json``, possibly missing)
+    is a fixture: its validation report's ``fixed_base``, else its category's policy."""
+    try:
+        ann = json.loads(Path(annotation).read_text())
+    except (OSError, ValueError):
+        return False
+    if "fixed_base" in ann:
+        return bool(ann["fixed_base"])
+    rep = ann.get("validation") or {}
+    if "fixed_base" in rep:
+        return bool(rep["fixed_base"])
+    return category_fixed_base(str(ann.get("category")))
 
 
 def annotation_dict(obj, grasps=None, files=None) -> dict:

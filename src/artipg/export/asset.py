@@ -320,7 +320,7 @@ def object_asset(obj, urdf_text: str, files: dict, sections: int = 24) -> Asset:
     """The :class:`Asset` of a generated object from its exported URDF text and
     {relative path: OBJ text} meshes, with per-part semantic labels of the visuals."""
     from artipg.export.meshes import primitive_mesh_arrays
-    from artipg.validate.sim import category_fixed_base
+    from artipg.export.annotation import category_fixed_base
 
     labels = {lk.name: (lk.parts[0].semantic if lk.parts else "body") for lk in obj.links}
     asset = asset_from_urdf(load_robot(urdf_text), files=files, fixed_base=category_fixed_base(obj.category),

@@ -66,12 +66,10 @@ def find_urdf(folder: Path) -> Path:
 def folder_fixed_base(folder: Path) -> bool:
     """Whether the object of ``folder`` is a fixture: ``annotation.json`` says so, or
     the category of PartNet-Mobility's ``meta.json`` is one of artipg's fixtures."""
-    from artipg.validate.sim import category_fixed_base
+    from artipg.export.annotation import annotated_fixed_base, category_fixed_base
 
     folder = Path(folder)
     if (folder / "annotation.json").is_file():
-        from artipg.validate.folder import annotated_fixed_base
-
         return annotated_fixed_base(folder / "annotation.json")
     try:
         cat = json.loads((folder / "meta.json").read_text())["model_cat"]
