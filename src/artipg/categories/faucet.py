@@ -138,6 +138,7 @@ RULE = Category(
     name="faucet",
     subcategories={"single_lever": 3.0, "two_handle": 2.0, "pull_out": 2.0, "gooseneck": 1.5},
     fixed_base=True,  # mounted on a sink or counter: simulated mounted, not dropped on a floor
+    materials={"body": "shell", "base": "shell"},
     mass_range=(0.3, 5.0),  # kg: brass taps with their mounting body
     slots=(Slot("base", base), Slot("levers", levers, after=("base",)), Slot("spout", spout, after=("levers",)),
            Slot("head", head, after=("spout",))),
