@@ -110,3 +110,92 @@ def test_textures_tile_and_carry_the_colour(kind):
 def test_unknown_texture_kind_fails_clearly():
     with pytest.raises(ValueError, match="unknown texture kind"):
         texture_image("marble", (0,))
+
+
+# ---------------------------------------------------------------- export
+
+@pytest.fixture(scope="module")
+def exported(tmp_path_factory):
+    from artipg.export import export_object
+
+    root = tmp_path_factory.mktemp("appearance")
+    return {c: export_object(artipg.generate(c, 2), root / c, n_points=0) for c in ("storage_furniture", "window",
+                                                                                    "faucet", "kettle")}
+
+
+def _obj_records(text: str) -> dict:
+    out = {}
+    for line in text.splitlines():
+        tag = line.split(" ", 1)[0]
+        out.setdefault(tag, []).append(line)
+    return out
+
+
+def test_every_visual_obj_has_normals_uvs_and_known_materials(exported):
+    for dest in exported.values():
+        mtl = (dest / "meshes" / "materials.mtl").read_text()
+        names = {line.split()[1] for line in mtl.splitlines() if line.startswith("newmtl")}
+        for line in mtl.splitlines():
+            if line.startswith("map_Kd"):
+                assert (dest / "meshes" / line.split()[1]).resolve().is_file()
+        for path in (dest / "meshes").glob("*.obj"):
+            rec = _obj_records(path.read_text())
+            if "_c" in path.stem and "vt" not in rec:
+                continue  # a collision hull
+            assert len(rec["v"]) == len(rec["vn"]) == len(rec["vt"]) > 0, path
+            assert {line.split()[1] for line in rec["usemtl"]} <= names
+            assert all(len(f.split()) == 4 and f.count("/") == 6 for f in rec["f"])
+
+
+def test_normals_point_out_of_the_faces(exported):
+    import trimesh
+
+    from artipg.export.meshes import link_visual_surface
+
+    obj = artipg.generate("kettle", 2)
+    for link in obj.links:
+        surf = link_visual_surface(link, materials_of(obj))
+        if surf is None:
+            continue
+        V, N, UV, F, groups = surf
+        fn = trimesh.triangles.normals(V[F])[0]
+        valid = trimesh.triangles.normals(V[F])[1]
+        corner = N[F[valid]]  # (F, 3, 3)
+        dots = np.einsum("fkj,fj->fk", corner, fn)
+        assert (dots > 0.5).mean() > 0.99, link.name  # smooth normals stay within the crease angle
+        assert groups[-1][2] == len(F) and UV.shape == (len(V), 2)
+
+
+def test_urdf_materials_and_textures_load(exported):
+    import trimesh
+    import yourdfpy
+
+    dest = exported["storage_furniture"]
+    robot = yourdfpy.URDF.load(str(dest / "mobility.urdf"), build_scene_graph=False, load_meshes=False)
+    mats = [v.material for link in robot.robot.links for v in link.visuals]
+    assert mats and all(m is not None and m.color is not None for m in mats)
+    tex = [m.texture.filename for m in mats if m.texture is not None]
+    assert tex and all((dest / t).is_file() for t in tex)
+    mesh = trimesh.load(dest / "meshes" / "base_0.obj", force="mesh")
+    assert isinstance(mesh.visual, trimesh.visual.TextureVisuals) and mesh.visual.uv is not None
+
+
+def test_window_glass_is_exported_transparent(exported):
+    mtl = (exported["window"] / "meshes" / "materials.mtl").read_text()
+    opacity = {}
+    for line in mtl.splitlines():
+        if line.startswith("newmtl"):
+            name = line.split()[1]
+        elif line.startswith("d "):
+            opacity[name] = float(line.split()[1])
+    assert opacity["glass_glass"] < 0.5 and opacity["main_wood"] == 1.0
+
+
+def test_export_is_byte_identical_per_seed(exported, tmp_path):
+    from artipg.export import export_object
+
+    again = export_object(artipg.generate("storage_furniture", 2), tmp_path / "again", n_points=0)
+    a = {p.relative_to(exported["storage_furniture"]): p.read_bytes() for p in exported["storage_furniture"].rglob("*")
+         if p.is_file()}
+    b = {p.relative_to(again): p.read_bytes() for p in again.rglob("*") if p.is_file()}
+    assert a == b and any(str(k).startswith("textures/") for k in a)

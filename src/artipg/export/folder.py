@@ -37,7 +37,7 @@ def object_files(obj, n_points: int = 2048, views: int = 0, view_points: int = 2
     robot, meshes = build_urdf(obj)
     files = {"mobility.urdf": urdf_text(robot).encode(), "semantics.txt": semantics_text(obj).encode(),
              "annotation.json": annotation_text(obj, grasps).encode()}
-    files.update({k: v.encode() for k, v in meshes.items()})
+    files.update({k: v if isinstance(v, bytes) else v.encode() for k, v in meshes.items()})  # PNGs are bytes
     if n_points > 0:
         files["points.npz"] = npz_bytes(point_arrays(obj, n_points, grasps=grasps))
     if views > 0:
