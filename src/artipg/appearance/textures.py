@@ -6,7 +6,7 @@ noise is white noise filtered in the Fourier domain, which is periodic by constr
 and wood rings use whole numbers of periods per tile. One tile covers
 :data:`TILE_METRES` of surface (UVs are metres divided by it, see
 :func:`artipg.export.meshes.primitive_surface_arrays`): the grain has the same scale on
-every part. Wood grain runs along v, brushed streaks along u.
+every part. Wood grain and brushed streaks run along v (a primitive's long side).
 """
 
 from __future__ import annotations
@@ -49,7 +49,7 @@ def _wood(params, size: int) -> np.ndarray:
 def _brushed(params, size: int) -> np.ndarray:
     seed, r, g, b, strength = params
     rng = np.random.default_rng(int(seed))
-    streak = periodic_noise(rng, size, 60.0, 0.6)
+    streak = periodic_noise(rng, size, 0.6, 60.0)
     return np.array([r, g, b]) * (1.0 + strength * 0.5 * streak)[..., None]
 
 

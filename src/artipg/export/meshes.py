@@ -137,8 +137,7 @@ primitive_mesh_arrays = PrimitiveCache(_mesh_arrays)
 #: Faces whose normals differ by less than this angle (degrees) share smooth vertex
 #: normals; sharper edges (a box's) split the vertices.
 CREASE_DEGREES = 40.0
-# texture-space axes (u, v) of faces facing x, y and z in the primitive frame: grain
-# (along v) runs up vertical faces and along y on horizontal ones
+# texture-space axes (u, v) of faces facing x, y and z in the primitive frame
 _UV_AXES = np.array([[1, 2], [0, 2], [0, 1]])
 
 
@@ -171,7 +170,11 @@ def _surface(geom, params, sections):
     np.add.at(N, i[near], fn[cf[j[near]]])
     N /= np.maximum(np.sqrt(np.einsum("ij,ij->i", N, N)), 1e-300)[:, None]
     ax = axis[cf]
-    uv = np.take_along_axis(V[cv], _UV_AXES[ax], axis=1) / TILE_METRES
+    # v along the longer side of the primitive in each plane: grain and brushing follow
+    # a rail, a door or a table top lengthwise, as they do in real ones
+    ext = V.max(axis=0) - V.min(axis=0) if len(V) else np.zeros(3)
+    axes = np.where((ext[_UV_AXES[:, 0]] > ext[_UV_AXES[:, 1]])[:, None], _UV_AXES[:, ::-1], _UV_AXES)
+    uv = np.take_along_axis(V[cv], axes[ax], axis=1) / TILE_METRES
     # corners with the same vertex, projection and normal (to 1e-3) become one vertex
     q = np.rint(N * 1000.0).astype(np.int64) + 1024
     nkey = (q[:, 0] << 22) | (q[:, 1] << 11) | q[:, 2]
