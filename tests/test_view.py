@@ -43,14 +43,14 @@ def _wait(pred, timeout: float, what: str):
 class Browser:
     """Headless chromium on ``url``, driven over the DevTools websocket."""
 
-    def __init__(self, url: str, profile):
+    def __init__(self, url: str, profile, size: tuple = (960, 720)):
         from websockets.sync.client import connect
 
         port = _free_port()
         self.proc = subprocess.Popen(
             [CHROMIUM, "--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
              "--disable-background-networking", "--disable-component-update", "--disable-sync",
-             "--enable-unsafe-swiftshader", "--window-size=960,720", f"--user-data-dir={profile}",
+             "--enable-unsafe-swiftshader", f"--window-size={size[0]},{size[1]}", f"--user-data-dir={profile}",
              f"--remote-debugging-port={port}", url],
             stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
 

@@ -69,7 +69,7 @@ FAMILIES: dict[str, Family] = {
                           strength=0.03, jitter=0.02),
     "matte_plastic": Family(_PLASTIC, roughness=(0.6, 0.8), strength=0.04),
     "glossy_plastic": Family(_PLASTIC, roughness=(0.12, 0.3), strength=0.02),
-    "dark_plastic": Family(((0.03, 0.03, 0.04), (0.10, 0.10, 0.11), (0.22, 0.23, 0.24), (0.62, 0.63, 0.64),
+    "neutral_plastic": Family(((0.03, 0.03, 0.04), (0.10, 0.10, 0.11), (0.22, 0.23, 0.24), (0.62, 0.63, 0.64),
                              (0.92, 0.92, 0.91)), roughness=(0.3, 0.6), strength=0.02, jitter=0.02),
     "rubber": Family(((0.04, 0.04, 0.04), (0.12, 0.12, 0.12), (0.20, 0.20, 0.21)), roughness=(0.85, 0.95),
                      strength=0.05),

@@ -34,8 +34,9 @@ GROUP = {
 _FURNITURE = {"main": {"wood": 0.45, "lacquered_wood": 0.25, "painted_wood": 0.3},
               "accent": {"brushed_metal": 0.35, "chrome": 0.15, "black_metal": 0.3, "brass": 0.2}}
 _APPLIANCE = {"main": {"painted_metal": 0.55, "stainless": 0.45},
-              "accent": {"stainless": 0.3, "chrome": 0.2, "black_metal": 0.3, "brushed_metal": 0.2},
-              "panel": {"dark_plastic": 0.7, "glossy_plastic": 0.3}, "display": {"display": 1.0}}
+              "accent": {"stainless": 0.3, "chrome": 0.2, "black_metal": 0.3, "brushed_metal": 0.2,
+                         "neutral_plastic": 0.2},
+              "panel": {"neutral_plastic": 1.0}, "display": {"display": 1.0}}
 _OPENING = {"main": {"painted_wood": 0.5, "wood": 0.3, "lacquered_wood": 0.2},
             "accent": {"brushed_metal": 0.3, "chrome": 0.2, "brass": 0.2, "black_metal": 0.3},
             "glass": {"glass": 1.0}}
@@ -47,42 +48,42 @@ SCHEMES: dict[str, dict] = {
     "box": {"families": _FURNITURE},
     "table": {"families": _FURNITURE},
     "chair": {"families": {**_FURNITURE, "main": {"wood": 0.5, "lacquered_wood": 0.3, "painted_wood": 0.2}},
-              "sub": {"office": {"main": {"dark_plastic": 1.0, "painted_wood": 0.0}}}},
+              "sub": {"office": {"main": {"neutral_plastic": 1.0, "painted_wood": 0.0}}}},
     "door": {"families": _OPENING},
     "window": {"families": _OPENING},
-    "refrigerator": {"families": _APPLIANCE, "groups": {"shelf": "glass"}},
-    "dishwasher": {"families": _APPLIANCE},
-    "oven": {"families": _APPLIANCE},
-    "microwave": {"families": _APPLIANCE},
-    "washing_machine": {"families": {**_APPLIANCE, "main": {"painted_metal": 0.8, "stainless": 0.2}}},
-    "safe": {"families": {**_APPLIANCE, "main": {"painted_metal": 1.0}}},
+    "refrigerator": {"families": _APPLIANCE, "groups": {"shelf": "glass", "tray": "panel"}},
+    "dishwasher": {"families": _APPLIANCE, "groups": {"tray": "panel"}},
+    "oven": {"families": _APPLIANCE, "groups": {"tray": "panel"}},
+    "microwave": {"families": _APPLIANCE, "groups": {"tray": "panel"}},
+    "washing_machine": {"families": {**_APPLIANCE, "main": {"painted_metal": 0.8, "stainless": 0.2}},
+                        "groups": {"tray": "panel"}},
+    "safe": {"families": {**_APPLIANCE, "main": {"painted_metal": 1.0}}, "groups": {"tray": "panel"}},
     "trash_can": {"families": {"main": {"stainless": 0.45, "matte_plastic": 0.3, "painted_metal": 0.25},
                                "accent": {"black_metal": 0.5, "matte_plastic": 0.3, "chrome": 0.2}},
                   "sub": {"bin_cabinet": {"main": _FURNITURE["main"]}}},
     "bucket": {"families": {"main": {"matte_plastic": 0.6, "glossy_plastic": 0.4},
                             "accent": {"brushed_metal": 0.5, "black_metal": 0.3, "stainless": 0.2}}},
     "bottle": {"families": {"main": {"glossy_plastic": 0.5, "matte_plastic": 0.5},
-                            "accent": {"matte_plastic": 0.5, "glossy_plastic": 0.3, "dark_plastic": 0.2}},
+                            "accent": {"matte_plastic": 0.5, "glossy_plastic": 0.3, "neutral_plastic": 0.2}},
                "sub": {"wine_bottle": {"main": {"tinted_glass": 1.0}},
                        "water_bottle": {"main": {"stainless": 0.4, "tinted_glass": 0.3, "glossy_plastic": 0.3}}}},
     "eyeglasses": {"groups": {"temple": "main"},
-                   "families": {"main": {"glossy_plastic": 0.4, "dark_plastic": 0.6}, "glass": {"glass": 1.0}},
+                   "families": {"main": {"glossy_plastic": 0.4, "neutral_plastic": 0.6}, "glass": {"glass": 1.0}},
                    "sub": {"sunglasses": {"glass": {"tinted_glass": 1.0}}}},
     "faucet": {"groups": {"spout": "main", "lever": "main", "nozzle": "main"},
                "families": {"main": {"chrome": 0.6, "brushed_metal": 0.2, "black_metal": 0.2}}},
     "kettle": {"groups": {"spout": "main", "lid": "main"},
-               "families": {"main": {"glossy_plastic": 0.5, "matte_plastic": 0.3, "dark_plastic": 0.2},
-                            "accent": {"black_metal": 0.5, "dark_plastic": 0.3, "brushed_metal": 0.2}}},
+               "families": {"main": {"glossy_plastic": 0.5, "matte_plastic": 0.3, "neutral_plastic": 0.2},
+                            "accent": {"black_metal": 0.5, "neutral_plastic": 0.3, "brushed_metal": 0.2}}},
     "kitchen_pot": {"families": {"main": {"stainless": 0.5, "brushed_metal": 0.3, "black_metal": 0.2},
                                  "accent": {"black_metal": 0.6, "stainless": 0.4}, "glass": {"glass": 1.0}}},
     "laptop": {"groups": {"screen": "panel"}, "families": {"main": {"brushed_metal": 0.5, "black_metal": 0.3, "painted_metal": 0.2},
-                            "panel": {"dark_plastic": 1.0}, "accent": {"dark_plastic": 1.0},
+                            "panel": {"neutral_plastic": 1.0}, "accent": {"neutral_plastic": 1.0},
                             "display": {"display": 1.0}}},
     "stapler": {"groups": {"arm": "main", "magazine": "accent", "hinge": "accent"},
-                "families": {"main": {"painted_metal": 0.4, "black_metal": 0.3, "dark_plastic": 0.3},
+                "families": {"main": {"painted_metal": 0.4, "black_metal": 0.3, "neutral_plastic": 0.3},
                              "accent": {"chrome": 0.6, "brushed_metal": 0.4}}},
-    "switch": {"families": {"main": {"matte_plastic": 0.5, "glossy_plastic": 0.5},
-                            "accent": {"matte_plastic": 0.6, "glossy_plastic": 0.4}}},
+    "switch": {"families": {"main": {"neutral_plastic": 1.0}, "accent": {"neutral_plastic": 1.0}}},
 }
 
 
@@ -136,7 +137,8 @@ def materials_of(obj) -> dict[str, Material]:
             allowed = FINISHES[cls]
             family = chosen[group]
             if family not in allowed:
-                family = _pick(allowed, rng, chosen.get("main") if group == "accent" else None)
+                fit = {f: w for f, w in (fams.get(group) or {}).items() if f in allowed and w > 0}
+                family = _pick(fit or allowed, rng, chosen.get("main") if group == "accent" else None)
             mat = made[key] = draw(family, rng, f"{group}_{cls}", cls)
         out[part.name] = mat
     return out
