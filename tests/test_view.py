@@ -125,13 +125,19 @@ def test_viewer_loads_every_object_and_moves_links(viewer, folder):
     assert len(viewer.folders) == 2 and viewer.q and all(v == 0.0 for v in viewer.q.values())
     name = next(iter(viewer.sliders))
     child = next(j.child for j in viewer.urdf.robot.joints if j.name == name)
-    before = np.array(viewer.frames[child].position)
+    def pose():
+        return np.concatenate([viewer.frames[child].position, viewer.frames[child].wxyz])
+
+    before = pose()
     viewer.sliders[name].value = viewer.sliders[name].max  # as the browser's slider does
     assert viewer.q[name] == pytest.approx(viewer.sliders[name].max)
-    assert np.abs(np.array(viewer.frames[child].position) - before).max() > 1e-3 or \
-        viewer.urdf.joint_map[name].type != "prismatic"
+    assert np.abs(pose() - before).max() > 1e-3  # the link moved
     for mode in viewer.mode.options:  # every colour mode recolours without error
         viewer.mode.value = mode
+    for box, kind in ((viewer.show_points, "points"), (viewer.show_grasps, "grasps"), (viewer.show_boxes, "boxes")):
+        assert viewer._layers[kind] and not any(h.visible for h in viewer._layers[kind])
+        box.value = True
+        assert all(h.visible for h in viewer._layers[kind])
     viewer.picker.value = viewer.picker.options[1]
     assert viewer.folder == viewer.folders[1]
 

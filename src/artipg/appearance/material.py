@@ -97,7 +97,7 @@ class Material:
         r, g, b = self.color
         spec = 0.04 + 0.96 * self.metallic  # F0 of dielectrics against metals
         ns = (1.0 - self.roughness) ** 2 * 1000.0
-        lines = [f"newmtl {self.name}", f"Ka 0 0 0", f"Kd {r:.4f} {g:.4f} {b:.4f}",
+        lines = [f"newmtl {self.name}", "Ka 0 0 0", f"Kd {r:.4f} {g:.4f} {b:.4f}",
                  f"Ks {spec:.4f} {spec:.4f} {spec:.4f}", f"Ns {ns:.2f}", f"d {self.opacity:.4f}",
                  f"illum {4 if self.opacity < 1 else 2}", f"Pr {self.roughness:.4f}", f"Pm {self.metallic:.4f}"]
         if self.texture:
