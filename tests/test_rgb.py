@@ -41,3 +41,18 @@ def test_rgb_view_is_deterministic_per_seed():
                    background=light["background"])[0]
     assert a.tobytes() == b.tobytes()
     assert random_lighting(np.random.default_rng(5)) == light != random_lighting(np.random.default_rng(6))
+
+
+def test_rgb_of_the_partial_views_uses_their_cameras():
+    from artipg.annotate.arrays import view_arrays
+    from artipg.appearance.rgb import rgb_view_arrays
+
+    obj = artipg.generate("storage_furniture", 1)
+    views = view_arrays(obj, 2, 256, seed=obj.seed, width=160, height=120)
+    out = rgb_view_arrays(obj, views, spp=2, seed=obj.seed, randomize=True)
+    assert out["rgb"].shape == (2, 120, 160, 3) and out["rgb"].dtype == np.uint8
+    obj_px, hit = views["instance_image"] >= 0, out["rgb_coverage"] > 0.5
+    assert (hit == obj_px)[obj_px | hit].mean() > 0.98  # silhouettes weigh more at 160 x 120
+    # randomised backgrounds differ between the views
+    bg = [out["rgb"][i][~obj_px[i] & ~hit[i]].mean(axis=0) for i in range(2)]
+    assert np.abs(bg[0] - bg[1]).sum() > 5

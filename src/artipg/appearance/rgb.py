@@ -130,3 +130,35 @@ def render_rgb(scene, cam, spp: int = 16, seed: int = 0,
     rgb = np.clip(img[..., :3] + (1.0 - alpha)[..., None] * srgb_to_linear(background), 0.0, 1.0)
     srgb = np.where(rgb <= 0.0031308, 12.92 * rgb, 1.055 * rgb ** (1 / 2.4) - 0.055)
     return np.rint(srgb * 255).astype(np.uint8), alpha
+
+
+def rgb_view_arrays(obj, views: dict, qpos=None, spp: int = 16, seed: int = 0,
+                    randomize: bool = False) -> dict[str, np.ndarray]:
+    """Colour images of the partial views ``views`` (the dict of
+    :func:`artipg.annotate.arrays.view_arrays`, whose cameras they reuse, so pixel (r, c)
+    of ``rgb[i]`` is pixel (r, c) of ``instance_image[i]``).
+
+    Returns ``{"rgb": (V, H, W, 3) uint8, "rgb_coverage": (V, H, W) float32}``. With
+    ``randomize`` every view draws its own sun, sky and background
+    (:func:`random_lighting`) from a stream keyed by (``seed``, 'appearance-lighting', view).
+    """
+    from artipg.annotate.views import Camera
+    from artipg.rules.streams import stream_key
+
+    poses, Ks = views["camera_poses"].astype(float), views["camera_intrinsics"].astype(float)
+    h, w = views["depth"].shape[1:] if "depth" in views else (240, 320)
+    scene = None if randomize else build_scene(obj, qpos)
+    rgbs, covs = [], []
+    for i, (T, K) in enumerate(zip(poses, Ks)):
+        cam = Camera(T, K, int(w), int(h))
+        background = (0.85, 0.85, 0.85)
+        if randomize:
+            rng = np.random.Generator(np.random.PCG64(np.random.SeedSequence(
+                int(seed), spawn_key=(stream_key("appearance-lighting"), i))))
+            light = random_lighting(rng)
+            background = light.pop("background")
+            scene = build_scene(obj, qpos, **light)
+        rgb, cov = render_rgb(scene, cam, spp=spp, seed=seed * 1009 + i, background=background)
+        rgbs.append(rgb)
+        covs.append(cov.astype(np.float32))
+    return {"rgb": np.stack(rgbs), "rgb_coverage": np.stack(covs)}
