@@ -17,6 +17,7 @@ COMMAND_MODULES = (
     "artipg.commands.render",
     "artipg.commands.validate",
     "artipg.commands.convert",
+    "artipg.commands.view",
 )
 
 app = typer.Typer(add_completion=False, no_args_is_help=True, pretty_exceptions_enable=False,

@@ -68,6 +68,7 @@ def temples(ctx):
 RULE = Category(
     name="eyeglasses",
     subcategories={"rectangular": 3.0, "round": 2.0, "sunglasses": 2.0, "reading": 1.5},
+    materials={"frame": "plastic"},
     mass_range=(0.01, 0.1),  # kg: rimless readers to acetate sunglasses
     slots=(Slot("front", front), Slot("temples", temples, after=("front",))),
 )

@@ -142,6 +142,7 @@ RULE = Category(
     # single-lever mixers are the most common (5 of the 6 real faucets of the development split)
     subcategories={"single_lever": 5.0, "two_handle": 1.5, "pull_out": 1.5, "gooseneck": 1.0},
     fixed_base=True,  # mounted on a sink or counter: simulated mounted, not dropped on a floor
+    materials={"body": "shell", "base": "shell"},
     mass_range=(0.3, 5.0),  # kg: brass taps with their mounting body
     slots=(Slot("base", base), Slot("levers", levers, after=("base",)), Slot("spout", spout, after=("levers",)),
            Slot("head", head, after=("spout",))),

@@ -169,7 +169,8 @@ RULE = Category(
     name="refrigerator",
     subcategories={"top_freezer": 2.0, "bottom_freezer": 2.0, "side_by_side": 2.0, "french_door": 2.0,
                    "single_door": 1.0},
-    materials={"body": "insulated", "door": "insulated", "drawer": "insulated"},
+    materials={"body": "insulated", "door": "insulated", "drawer": "insulated", "shelf": "glass",
+               "base": "shell"},
     mass_range=(30.0, 160.0),  # kg: single-door (~40 kg) to side-by-side (~130 kg)
     slots=(Slot("body", body), Slot("fronts", fronts, after=("body",))),
 )

@@ -42,7 +42,7 @@ def object_files(obj, n_points: int = 2048, views: int = 0, view_points: int = 2
     grasps = world_grasps(obj)
     robot, meshes = build_urdf(obj)
     files = {"mobility.urdf": urdf_text(robot).encode(), "semantics.txt": semantics_text(obj).encode()}
-    files.update({k: v.encode() for k, v in meshes.items()})
+    files.update({k: v if isinstance(v, bytes) else v.encode() for k, v in meshes.items()})  # PNGs are bytes
     if formats is None:
         from artipg.export.formats import DEFAULT_FORMATS as formats
     if any(f != "urdf" for f in formats):
