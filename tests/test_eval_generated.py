@@ -23,13 +23,20 @@ def test_generated_set_is_the_objects_own_sample():
         np.testing.assert_array_equal(s.link[i], pc.link)
 
 
-def test_partnet_pose_opens_laptops_only():
+def test_partnet_pose_opens_laptops_and_raises_bails_only():
     lap = artipg.generate("laptop", 0)
     q = partnet_qpos(lap, "laptop")
     assert q and all(v > 1.0 for v in q.values())
     rest, opened = generated_set("laptop", [0], 512), generated_set("laptop", [0], 512, pose="partnet")
     assert opened.structures[0].extents[2] > 2 * rest.structures[0].extents[2]  # the screen stands up
-    assert partnet_qpos(artipg.generate("bucket", 0), "bucket") == {}
+    bucket = next(o for o in map(lambda s: artipg.generate("bucket", s), range(20)) if partnet_qpos(o, "bucket"))
+    q = partnet_qpos(bucket, "bucket")
+    assert list(q) == [j.name for j in bucket.movable_joints if j.child.startswith("handle")]
+    lo, hi = bucket.joint(next(iter(q))).limits
+    assert 0.4 * hi <= next(iter(q.values())) <= 0.6 * hi  # the bail stands up, the lid stays closed
+    up = sum(bool(partnet_qpos(artipg.generate("bucket", s), "bucket")) for s in range(40))
+    assert 10 <= up <= 38  # the share of raised bails
+    assert partnet_qpos(artipg.generate("kitchen_pot", 0), "kitchen_pot") == {}
 
 
 def _run(*args):

@@ -57,6 +57,7 @@ def closure(ctx):
 RULE = Category(
     name="bottle",
     subcategories={"water_bottle": 3.0, "wine_bottle": 1.5, "pump_bottle": 1.5, "squeeze_bottle": 2.0},
+    materials={"body": "shell"},
     mass_range=(0.05, 1.5),  # kg: empty plastic bottles to filled glass wine bottles
     slots=(Slot("body", body), Slot("closure", closure, after=("body",))),
 )

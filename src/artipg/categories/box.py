@@ -152,6 +152,7 @@ def extras(ctx):
 RULE = Category(
     name="box",
     subcategories={"hinged_box": 3.0, "double_lid_box": 1.0, "flap_box": 2.0, "sliding_lid_box": 1.0, "chest": 1.5},
+    materials={"lid": "wood"},
     mass_range=(0.2, 60.0),  # kg: cardboard-light boxes to solid-wood blanket chests
     slots=(Slot("body", body), Slot("lids", lids, after=("body",)), Slot("extras", extras, after=("lids",))),
 )

@@ -163,6 +163,7 @@ def racks(ctx):
 RULE = Category(
     name="dishwasher",
     subcategories={"freestanding": 2.0, "built_in": 2.0, "slimline": 1.0, "countertop": 1.0},
+    materials={"body": "shell", "door": "shell", "leg": "shell", "base": "shell", "top": "shell", "drawer": "shell"},
     mass_range=(10.0, 80.0),  # kg: countertop units (~20 kg) to full-size built-ins (~50 kg)
     slots=(Slot("body", body), Slot("door", door, after=("body",)), Slot("racks", racks, after=("body", "door"))),
 )

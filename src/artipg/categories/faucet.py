@@ -1,6 +1,7 @@
 """Faucets (taps and mixers) for basins and kitchen sinks.
 
-Parts: a deck plate (round or rectangular; a long plate under two-handle faucets)
+Parts: a deck plate (round or rectangular, optional under single-lever mixers; a long
+plate under two-handle faucets)
 under a body column (single-lever, pull-out, gooseneck) or a spout
 hub and two valve bodies (two-handle); a spout -- a collar spout around the column
 (straight tube or flat waterfall) for single-lever mixers, a top-mounted gooseneck,
@@ -10,7 +11,7 @@ continuous); levers: a joystick cap on the column that lifts about a horizontal 
 handles (lever, cross or fluted knob) turning a quarter turn outwards about z
 (two-handle); pull-out faucets carry a spray head that slides out of the spout along
 its outlet direction (prismatic). Spouts rise high enough to swivel over the levers.
-Sizes (metres): 0.1-0.45 tall; spouts reach 0.06-0.25 forward.
+Sizes (metres): 0.1-0.45 tall; spouts reach 0.06-0.3 forward.
 """
 
 from __future__ import annotations
@@ -55,9 +56,11 @@ def base(ctx):
         for i, s in enumerate((1, -1)):  # (valve top frame, side, largest handle reach)
             root.add(column(p.scope(f"valve{i}"), rv, hv), translation(0, s * spread / 2, zd))
             valves.append((translation(0, s * spread / 2, zd + hv), s, spread / 2 - rc - C))
-    else:
+    elif ctx.sub != "single_lever" or p.flag("has_deck", 0.5):  # many mixers stand on the sink without a plate
         deck = root.add(ctx.choose("deck", DECKS)(p.scope("deck"), radius=rc + p.uniform("rim", 0.008, 0.02)))
         zd = deck.anchor("top")[2]
+    else:
+        zd = 0.0
     root.add(column(p.scope("column"), rc, hc), translation(0, 0, zd))
     return root, rc, translation(0, 0, zd + hc), valves, hc
 
@@ -100,7 +103,7 @@ def spout(ctx):
     p, b = ctx.p, ctx.builder
     r = min(rc, p.uniform("tube_radius", 0.008, 0.014))
     if ctx.sub == "single_lever":
-        sp = ctx.choose("template", COLLAR_SPOUTS)(p, rc, max_tip=0.25 * hc)
+        sp = ctx.choose("template", COLLAR_SPOUTS)(p, rc, max_tip=0.25 * hc, run=(0.08, 0.22))
         z = -p.uniform("collar_drop", 0.005, 0.3 * hc - 0.02) - sp.anchor("collar_top")[2]
         origin = top @ translation(0, 0, z)
     else:
@@ -136,8 +139,10 @@ def head(ctx):
 
 RULE = Category(
     name="faucet",
-    subcategories={"single_lever": 3.0, "two_handle": 2.0, "pull_out": 2.0, "gooseneck": 1.5},
+    # single-lever mixers are the most common (5 of the 6 real faucets of the development split)
+    subcategories={"single_lever": 5.0, "two_handle": 1.5, "pull_out": 1.5, "gooseneck": 1.0},
     fixed_base=True,  # mounted on a sink or counter: simulated mounted, not dropped on a floor
+    materials={"body": "shell", "base": "shell"},
     mass_range=(0.3, 5.0),  # kg: brass taps with their mounting body
     slots=(Slot("base", base), Slot("levers", levers, after=("base",)), Slot("spout", spout, after=("levers",)),
            Slot("head", head, after=("spout",))),

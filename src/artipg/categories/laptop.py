@@ -22,10 +22,11 @@ from artipg.templates.controls import button_bezel, mount_button, rect_button, r
 from artipg.templates.laptop import KEYBOARDS, laptop_base, screen_lid, touchpad
 
 # sub-category -> width, depth, base thickness, lid thickness, touchpad width / base width
-SIZES = {"ultrabook": ((0.29, 0.33), (0.195, 0.23), (0.009, 0.014), (0.004, 0.006), (0.4, 0.55)),
-         "mainstream": ((0.32, 0.38), (0.22, 0.26), (0.015, 0.022), (0.006, 0.009), (0.3, 0.45)),
-         "business": ((0.31, 0.36), (0.21, 0.25), (0.015, 0.02), (0.006, 0.009), (0.28, 0.35)),
-         "gaming": ((0.35, 0.40), (0.25, 0.29), (0.02, 0.028), (0.008, 0.012), (0.3, 0.4))}
+# (widened on the development split: aspect ratios from 16:9 to 3:2, older thick bases)
+SIZES = {"ultrabook": ((0.28, 0.34), (0.19, 0.245), (0.009, 0.016), (0.004, 0.006), (0.4, 0.55)),
+         "mainstream": ((0.32, 0.39), (0.21, 0.27), (0.015, 0.028), (0.006, 0.009), (0.3, 0.45)),
+         "business": ((0.3, 0.37), (0.2, 0.26), (0.015, 0.03), (0.006, 0.009), (0.28, 0.35)),
+         "gaming": ((0.35, 0.41), (0.24, 0.3), (0.02, 0.035), (0.008, 0.012), (0.3, 0.4))}
 _FACE_UP = Placer(rot_y(math.pi / 2))  # control frame (surface normal -x) -> surface normal +z
 
 

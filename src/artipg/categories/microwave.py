@@ -146,6 +146,7 @@ def table(ctx):
 RULE = Category(
     name="microwave",
     subcategories={"knob_panel": 2.0, "button_panel": 3.0, "combo": 2.0, "over_the_range": 1.0},
+    materials={"body": "shell", "door": "shell", "leg": "shell", "base": "shell", "top": "shell", "drawer": "shell"},
     mass_range=(5.0, 30.0),  # kg: compact units (~10 kg) to over-the-range models (~25 kg)
     slots=(Slot("body", body), Slot("door", door, after=("body",)), Slot("panel", panel, after=("door",)),
            Slot("turntable", table, after=("body",))),

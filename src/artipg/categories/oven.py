@@ -187,6 +187,7 @@ def _controls(ctx, root, panel):
 RULE = Category(
     name="oven",
     subcategories={"range": 3.0, "wall_oven": 2.0, "double_oven": 1.0, "countertop": 1.0},
+    materials={"body": "shell", "door": "shell", "leg": "shell", "base": "shell", "top": "shell", "drawer": "shell"},
     mass_range=(10.0, 130.0),  # kg: countertop ovens to free-standing ranges
     slots=(Slot("body", body), Slot("fronts", fronts, after=("body",))),
 )

@@ -28,12 +28,12 @@ from artipg.templates.racks import door_bins
 from artipg.templates.supports import plinth
 
 # sub-category -> width, height, depth ranges, freezer share of height (or width), layout
-SUBS = {
-    "top_freezer": ((0.55, 0.76), (1.4, 1.8), (0.6, 0.75), (0.25, 0.33), "top"),
-    "bottom_freezer": ((0.6, 0.76), (1.6, 1.9), (0.62, 0.75), (0.28, 0.36), "bottom"),
-    "side_by_side": ((0.84, 0.92), (1.7, 1.85), (0.65, 0.8), (0.38, 0.45), "side"),
-    "french_door": ((0.75, 0.92), (1.7, 1.9), (0.68, 0.8), (0.28, 0.36), "french"),
-    "single_door": ((0.48, 0.6), (0.82, 1.85), (0.55, 0.65), (0.0, 0.0), "single"),
+SUBS = {  # widths, heights and depths widened to the development split's wide, low fridges
+    "top_freezer": ((0.55, 0.84), (1.25, 1.8), (0.55, 0.75), (0.25, 0.33), "top"),
+    "bottom_freezer": ((0.6, 0.84), (1.5, 1.9), (0.58, 0.75), (0.28, 0.36), "bottom"),
+    "side_by_side": ((0.84, 1.0), (1.45, 1.85), (0.6, 0.8), (0.38, 0.45), "side"),
+    "french_door": ((0.75, 1.0), (1.45, 1.9), (0.6, 0.8), (0.28, 0.36), "french"),
+    "single_door": ((0.45, 0.6), (0.5, 1.5), (0.45, 0.65), (0.0, 0.0), "single"),
 }
 HANDLES = {bar_handle: 2.0, flat_bar_handle: 2.0, arch_handle: 1.5, edge_pull: 1.0}
 DOORS = {slab_door: 3.0, framed_door: 1.0}
@@ -167,9 +167,10 @@ def _dispenser(ctx, q, link, door, t):
 
 RULE = Category(
     name="refrigerator",
-    subcategories={"top_freezer": 2.0, "bottom_freezer": 2.0, "side_by_side": 1.5, "french_door": 1.5,
+    subcategories={"top_freezer": 2.0, "bottom_freezer": 2.0, "side_by_side": 2.0, "french_door": 2.0,
                    "single_door": 1.0},
-    materials={"body": "insulated", "door": "insulated", "drawer": "insulated"},
+    materials={"body": "insulated", "door": "insulated", "drawer": "insulated", "shelf": "glass",
+               "base": "shell"},
     mass_range=(30.0, 160.0),  # kg: single-door (~40 kg) to side-by-side (~130 kg)
     slots=(Slot("body", body), Slot("fronts", fronts, after=("body",))),
 )

@@ -126,6 +126,7 @@ def controls(ctx):
 RULE = Category(
     name="safe",
     subcategories={"dial_safe": 2.0, "keypad_safe": 2.0, "hotel_safe": 1.0, "cabinet_safe": 1.0},
+    materials={"body": "shell", "door": "shell", "leg": "shell", "shelf": "shell"},
     mass_range=(5.0, 150.0),  # kg: hotel safes to cabinet safes
     slots=(Slot("body", body), Slot("door", door, after=("body",)), Slot("controls", controls, after=("door",))),
 )

@@ -87,6 +87,7 @@ def arm(ctx):
 RULE = Category(
     name="stapler",
     subcategories={"desktop": 3.0, "mini": 1.5, "heavy_duty": 1.0, "long_reach": 1.0},
+    materials={"base": "shell"},
     mass_range=(0.05, 2.0),  # kg: mini staplers to heavy-duty desk staplers
     slots=(Slot("base", base), Slot("magazine", magazine, after=("base",)), Slot("arm", arm, after=("magazine",))),
 )

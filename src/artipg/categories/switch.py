@@ -1,7 +1,10 @@
-"""Wall switches: rocker switches, toggle switches, push-button panels and dimmers.
+"""Wall switches: rocker switches, toggle switches, push-button panels, dimmers and
+surface-mounted switch boxes.
 
 Parts: a cover plate (flat, stepped, or a European frame around a flush insert) on
-the wall, facing -x, carrying 1-4 switch modules side by side (push buttons also in
+the wall, or a deep surface-mounted box (as deep as 0.6-1.6 times its width, like the
+boxy switches of the PartNet-Mobility development split), facing -x, carrying 1-4
+switch modules side by side (push buttons also in
 a 2 x 2 grid): rocker paddles (flat or crowned) in bezels, toggle levers on small
 escutcheon bosses, push-button caps (round or rectangular), and, on dimmers, a
 rotary knob next to an optional rocker or toggle.
@@ -19,7 +22,8 @@ from artipg.geometry.transforms import translation
 from artipg.rules import Category, Slot
 from artipg.templates.controls import (BUTTONS, fluted_knob, mount_button, mount_knob, rect_button, round_button,
                                        round_knob)
-from artipg.templates.wall_switch import PLATE_MARGIN, PLATES, ROCKERS, button_bezel, rocker_module, toggle_module
+from artipg.templates.wall_switch import (PLATE_MARGIN, PLATES, ROCKERS, button_bezel, rocker_module, surface_box,
+                                         toggle_module)
 
 # sub-category -> number of modules, module pitch (y), plate height
 SUBS = {
@@ -27,6 +31,7 @@ SUBS = {
     "toggle": ((1, 3), (0.038, 0.047), (0.1, 0.12)),
     "push_button": ((1, 4), (0.024, 0.034), (0.06, 0.09)),
     "dimmer": ((1, 2), (0.042, 0.05), (0.08, 0.12)),
+    "surface_box": ((1, 2), (0.04, 0.05), (0.07, 0.11)),
 }
 KNOBS = {round_knob: 2.0, fluted_knob: 1.0}
 
@@ -38,12 +43,13 @@ def plate(ctx):
     pitch = p.uniform("pitch", *pr)
     cols = 2 if ctx.sub == "push_button" and n == 4 and p.flag("grid", 0.6) else n
     rows = n // cols
-    tmpl = ctx.choose("plate", PLATES)
+    tmpl = ctx.choose("plate", {surface_box: 1.0} if ctx.sub == "surface_box" else PLATES)
     margin = PLATE_MARGIN[tmpl] + p.uniform("margin", 0.0, 0.01)
     H = max(p.uniform("height", *hr), rows * pitch + 2 * margin)
     W = max(cols * pitch + 2 * margin, p.uniform("min_width", 0.05, 0.07))
+    kw = {"depth": p.uniform("depth_ratio", 0.6, 1.6) * W} if tmpl is surface_box else {}
     root = ctx.builder.create_link("plate")
-    part = root.add(tmpl(p, W, H))
+    part = root.add(tmpl(p, W, H, **kw))
     face = part.anchor("face")[0]
     ch = (H - 2 * margin) / rows
     cells = [(-(cols - 1) / 2 * pitch + c * pitch, ((rows - 1) / 2 - r) * ch) for r in range(rows) for c in range(cols)]
@@ -55,11 +61,11 @@ def modules(ctx):
     p = ctx.p
     rocker = ctx.choose("rocker", ROCKERS)
     button = ctx.choose("button", BUTTONS)
-    side = ctx.p.choice("side_module", ("rocker", "toggle")) if ctx.sub == "dimmer" else None
+    side = ctx.p.choice("side_module", ("rocker", "toggle")) if ctx.sub in ("dimmer", "surface_box") else None
     for i, (y, z) in enumerate(cells):
         q = p.scope(f"m{i}")
         pose = translation(face, y, z)
-        kind = ctx.sub if ctx.sub != "dimmer" else ("knob" if i == 0 else side)
+        kind = {"dimmer": "knob" if i == 0 else side, "surface_box": side}.get(ctx.sub, ctx.sub)
         if kind == "rocker":
             w = q.uniform("width", 0.5, 0.72) * cw
             h = q.uniform("height", 0.55, 0.85) * (ch - 0.012)
@@ -82,8 +88,9 @@ def modules(ctx):
 
 RULE = Category(
     name="switch",
-    subcategories={"rocker": 3.0, "toggle": 2.0, "push_button": 2.0, "dimmer": 1.0},
+    subcategories={"rocker": 3.0, "toggle": 2.0, "push_button": 2.0, "dimmer": 1.0, "surface_box": 3.0},
     fixed_base=True,  # mounted on a wall: simulated mounted, not dropped on a floor
+    materials={"body": "plastic"},
     mass_range=(0.005, 0.5),  # kg: a wall plate with its modules
     slots=(Slot("plate", plate), Slot("modules", modules, after=("plate",))),
 )

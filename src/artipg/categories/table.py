@@ -5,7 +5,9 @@ round or tapered) joined by an apron, a pedestal column on a disc / cone / cross
 a trestle (two end frames and a stretcher), or two panel ends; coffee and side tables
 on legs may have a lower shelf. The apron's front board holds 1-3 drawers. Desks may
 instead stand on one or two drawer pedestals (carcasses with 1-3 overlay drawers or a
-door each, the other side on a panel end) with an optional centre drawer.
+door each, the other side on a panel end) with an optional centre drawer; side tables
+may be nightstands, one such carcass as wide as the top (as several tables of the
+PartNet-Mobility development split are).
 Joints: drawers prismatic along -x (0.6-0.85 of their depth), pedestal doors revolute
 about their outer vertical edge (1.5-2.0 rad); 1-6 movable joints, all others fixed.
 Sizes (metres, width along y): dining 0.9-2.2 x 0.75-1.05, 0.72-0.78 tall; coffee
@@ -34,7 +36,7 @@ SUBS = {
     "dining": ((0.9, 2.2), (0.75, 1.05), (0.72, 0.78), {"legs": 3.0, "pedestal": 1.0, "trestle": 1.5}, 2),
     "coffee": ((0.8, 1.4), (0.45, 0.8), (0.35, 0.5), {"legs": 3.0, "panels": 1.5, "pedestal": 0.5}, 2),
     "desk": ((1.0, 1.8), (0.55, 0.8), (0.72, 0.78), {"legs": 1.5, "pedestals": 3.0, "panels": 1.0}, 3),
-    "side": ((0.4, 0.65), (0.4, 0.65), (0.5, 0.75), {"legs": 3.0, "pedestal": 1.0}, 1),
+    "side": ((0.4, 0.65), (0.4, 0.65), (0.5, 0.75), {"legs": 3.0, "pedestal": 1.0, "cabinet": 2.5}, 1),
 }
 LEGS = {square_legs: 1.0, round_legs: 1.0, tapered_legs: 1.0}
 DESK_TOPS = {slab_top: 1.0}
@@ -73,10 +75,15 @@ def _apron_drawers(ctx, root, zu, ax, ay, y_free, depth, n_max, handle, drawer):
                    handle=handle, parent_pose=pose)
 
 
-def _desk(ctx, root, zu, ax, ay, handle, drawer):
+def _desk(ctx, root, zu, ax, ay, handle, drawer, full=False):
+    """Drawer pedestals under a desk top, or (``full``) one carcass as wide as the top:
+    a cabinet side table (nightstand)."""
     p = ctx.p
-    wp = min(p.uniform("pedestal_width", 0.35, 0.45), 0.4 * ay)
-    sides = (-1, 1) if p.flag("two_pedestals", 0.5) else (p.choice("pedestal_side", (-1, 1)),)
+    if full:
+        wp, sides = 2 * ay, (1,)
+    else:
+        wp = min(p.uniform("pedestal_width", 0.35, 0.45), 0.4 * ay)
+        sides = (-1, 1) if p.flag("two_pedestals", 0.5) else (p.choice("pedestal_side", (-1, 1)),)
     kick = p.uniform("kick", 0.03, 0.08)
     door = ctx.choose("door", DOORS)
     k = 0
@@ -100,6 +107,8 @@ def _desk(ctx, root, zu, ax, ay, handle, drawer):
                 add_drawer(ctx, root, q.scope(f"cell{r}"), front_x=-ax, outer=outer, inner=inner,
                            depth=2 * ax - 0.03, template=drawer, handle=handle)
             k += 1
+    if full:
+        return
     if len(sides) == 1:  # the other end stands on a panel
         t = p.uniform("panel_thickness", 0.025, 0.05)
         y = -sides[0] * ay
@@ -133,8 +142,8 @@ def base(ctx):
     kind = p.choice("base", weights)
     handle = ctx.choose("handle", FRONT_HANDLES)
     drawer = ctx.choose("drawer", DRAWERS)
-    if kind == "pedestals":
-        return _desk(ctx, root, zu, ax, ay, handle, drawer)
+    if kind in ("pedestals", "cabinet"):
+        return _desk(ctx, root, zu, ax, ay, handle, drawer, full=kind == "cabinet")
     board = 0.025  # upper bound of the apron board thickness
     if kind == "legs":
         legs = ctx.choose("legs", LEGS)(p.scope("legs"), 2 * ax, 2 * ay, zu)
@@ -163,7 +172,7 @@ def base(ctx):
 
 RULE = Category(
     name="table",
-    subcategories={"dining": 3.0, "coffee": 2.0, "desk": 2.0, "side": 1.5},
+    subcategories={"dining": 3.0, "coffee": 2.0, "desk": 2.0, "side": 2.5},
     mass_range=(3.0, 120.0),  # kg: side tables to solid dining tables
     slots=(Slot("top", top), Slot("base", base, after=("top",))),
 )

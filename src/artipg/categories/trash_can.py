@@ -171,6 +171,7 @@ def _cabinet(ctx, root, W, D, H):
 RULE = Category(
     name="trash_can",
     subcategories={"pedal_bin": 3.0, "swing_bin": 1.5, "touch_top_bin": 1.5, "bin_cabinet": 1.5},
+    materials={"body": "shell", "flap": "shell", "drawer": "shell", "base": "shell", "leg": "shell"},
     mass_range=(0.5, 50.0),  # kg: plastic swing bins to wooden tilt-out bin cabinets
     slots=(Slot("body", body), Slot("top", top, after=("body",))),
 )

@@ -192,6 +192,7 @@ def _controls(ctx, root, pose, w, h, twin):
 RULE = Category(
     name="washing_machine",
     subcategories={"front_loader": 3.0, "top_loader": 2.0, "compact": 1.0, "twin_tub": 1.0},
+    materials={"body": "shell", "door": "shell", "leg": "shell", "drawer": "shell"},
     mass_range=(15.0, 100.0),  # kg: compact / twin-tub (~20 kg) to front loaders with counterweights
     slots=(Slot("body", body), Slot("fronts", fronts, after=("body",))),
 )

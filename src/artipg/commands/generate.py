@@ -1,9 +1,12 @@
-"""``artipg categories`` and ``artipg generate``."""
+"""``artipg categories``, ``artipg generate`` and ``artipg index``."""
 
 from __future__ import annotations
 
 import os
-from concurrent.futures import ProcessPoolExecutor
+import signal
+import threading
+import time
+from collections import Counter
 from pathlib import Path
 from typing import List
 
@@ -12,26 +15,6 @@ from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, T
 
 import artipg
 from artipg.commands import fail
-
-
-def _generate_one(task: tuple[str, int, str, int, bool, int, bool, bool]) -> tuple[str, int, str]:
-    """Worker: generate (validated and repaired unless told not to) and export one
-    object; returns (category, seed, status), status "written", "skipped" or
-    "invalid" (written, but no candidate passed validation within the budget)."""
-    from artipg.export.folder import export_object
-
-    category, seed, out, n_points, overwrite, views, validate, sim = task
-    dest = Path(out) / category / str(seed)
-    if dest.exists() and not overwrite:
-        return category, seed, "skipped"
-    if validate:
-        from artipg.validate import generate_valid
-
-        obj = generate_valid(category, seed, simulate=sim)
-    else:
-        obj = artipg.generate(category, seed)
-    export_object(obj, dest, n_points=n_points, overwrite=overwrite, views=views)
-    return category, seed, "written" if obj.report.get("ok", True) else "invalid"
 
 
 def _check_out_dir(out: Path) -> None:
@@ -81,8 +64,20 @@ def register(app: typer.Typer) -> None:
         validate: bool = typer.Option(True, "--validate/--no-validate",
                                       help="Check penetration, floating parts and joint sweeps; repair failures."),
         sim: bool = typer.Option(False, "--sim", help="Also require the pybullet / MuJoCo checks (slower)."),
+        shards: int = typer.Option(0, "--shards", help="Also pack points and annotations into WebDataset-style tar "
+                                                       "shards of N objects in OUT/shards/ (0: none)."),
+        formats: str = typer.Option(None, "--formats", show_default=False,
+                                    help="Files beside the URDF, of urdf,mjcf,usd,glb [default: urdf,mjcf] "
+                                         "(see docs/formats.md)."),
+        actuators: bool = typer.Option(False, "--actuators", help="Position servos per joint in MJCF and USD."),
     ) -> None:
-        """Generate objects into OUT/<category>/<seed>/ (re-running resumes)."""
+        """Generate objects into OUT/<category>/<seed>/ and index them in OUT/index.jsonl.
+
+        Re-running resumes: complete folders are kept, incomplete or damaged ones (files
+        that differ from the list in their annotation.json) are rebuilt. Ctrl-C stops
+        after the objects in progress.
+        """
+        from artipg.data.engine import BuildOptions
         from artipg.export.folder import clean_stale_tmp
 
         if n < 1:
@@ -95,29 +90,128 @@ def register(app: typer.Typer) -> None:
             fail(f"--views must be >= 0, got {views}")
         if workers < 1:
             fail(f"--workers must be at least 1, got {workers}")
+        if shards < 0:
+            fail(f"--shards must be >= 0, got {shards}")
+        from artipg.export.formats import DEFAULT_FORMATS, parse_formats
+
+        try:
+            fmts = parse_formats(formats or DEFAULT_FORMATS)
+        except ValueError as e:
+            fail(str(e))
         cats = resolve_categories(category)
         _check_out_dir(out)
         for c in cats:
             clean_stale_tmp(out / c)
-        tasks = [(c, s, str(out), points, overwrite, views, validate, sim) for c in cats for s in range(seed, seed + n)]
-        counts = {"written": 0, "skipped": 0, "invalid": 0}
-        columns = (TextColumn("{task.description}"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(),
-                   TimeRemainingColumn())
-        with Progress(*columns, disable=quiet, transient=False) as bar:
-            job = bar.add_task("generating", total=len(tasks))
-            if workers == 1:
-                results = map(_generate_one, tasks)
-            else:
-                pool = ProcessPoolExecutor(max_workers=workers)
-                results = pool.map(_generate_one, tasks, chunksize=max(1, min(32, len(tasks) // (8 * workers))))
-            try:
-                for _, _, status in results:
-                    counts[status] += 1
-                    bar.advance(job)
-            finally:
-                if workers > 1:
-                    pool.shutdown(cancel_futures=True)
-        typer.echo(f"{counts['written'] + counts['invalid']} written, {counts['skipped']} already present, in {out}")
-        if counts["invalid"]:
-            typer.echo(f"{counts['invalid']} failed validation after repair (see 'validation' in their "
-                       "annotation.json)", err=True)
+        tasks = [(c, s) for c in cats for s in range(seed, seed + n)]
+        opts = BuildOptions(str(out), n_points=points, views=views, validate=validate, simulate=sim,
+                            overwrite=overwrite, formats=fmts, actuators=actuators)
+        counts, errors, stopped = _run(tasks, opts, out, workers, quiet)
+        _summary(counts, errors, out, validate)
+        if stopped:
+            typer.echo(f"interrupted: {_written(counts)} written, re-run to resume", err=True)
+            raise typer.Exit(130)
+        if shards:
+            _write_shards(out, shards)
+        if counts["error"]:
+            raise typer.Exit(1)
+
+    @app.command()
+    def index(
+        out: Path = typer.Argument(..., help="Output folder of 'artipg generate'."),
+        hashes: bool = typer.Option(True, "--hashes/--sizes-only", help="Check file hashes, not only sizes."),
+        shards: int = typer.Option(0, "--shards", help="Also rewrite OUT/shards/ with N objects per shard."),
+    ) -> None:
+        """Rebuild OUT/index.jsonl from the complete object folders on disk."""
+        from artipg.data.index import INDEX_NAME, rebuild_index
+
+        if not out.is_dir():
+            fail(f"{str(out)!r} is not a folder")
+        if shards < 0:
+            fail(f"--shards must be >= 0, got {shards}")
+        rows, bad = rebuild_index(out, hashes=hashes)
+        typer.echo(f"indexed {len(rows)} objects in {out / INDEX_NAME}")
+        if bad:
+            typer.echo(f"{len(bad)} incomplete or damaged folders left out (re-run 'artipg generate' to rebuild "
+                       f"them), e.g. {bad[0][0]}: {bad[0][1]}", err=True)
+        if shards:
+            _write_shards(out, shards)
+
+
+def _write_shards(out: Path, per_shard: int) -> None:
+    from artipg.data.shards import SHARD_DIR, write_shards
+
+    paths = write_shards(out, per_shard)
+    typer.echo(f"{len(paths)} shards of up to {per_shard} objects in {out / SHARD_DIR}")
+
+
+def _written(counts: Counter) -> int:
+    return counts["new"] + counts["rebuilt"] + counts["rewritten"]
+
+
+def _run(tasks: list, opts, out: Path, workers: int, quiet: bool) -> tuple[Counter, list[str], bool]:
+    """Run the tasks with a progress display and the index kept as they finish;
+    returns (outcome counts, "category/seed: error" lines, whether Ctrl-C stopped the run)."""
+    from artipg.data.engine import run_tasks
+    from artipg.data.index import IndexAppender, read_index, write_index
+
+    # rows of this run's objects are re-emitted as they are checked or written; rows
+    # of other objects stay while their folder does
+    mine = {f"{c}/{s}" for c, s in tasks}
+    rows = [r for r in read_index(out) if r["path"] not in mine and (out / r["path"] / "annotation.json").is_file()]
+    write_index(out, rows)
+    counts: Counter = Counter()
+    errors: list[str] = []
+    stop = threading.Event()
+
+    def on_sigint(signum, frame):
+        if stop.is_set():  # a second Ctrl-C: stop now
+            raise KeyboardInterrupt
+        stop.set()
+
+    previous = signal.signal(signal.SIGINT, on_sigint)
+    columns = (TextColumn("{task.description}"), BarColumn(), MofNCompleteColumn(), TextColumn("{task.fields[stats]}"),
+               TimeElapsedColumn(), TimeRemainingColumn())
+    t0 = time.perf_counter()
+    try:
+        with Progress(*columns, disable=quiet, transient=False) as bar, IndexAppender(out) as index:
+            job = bar.add_task("generating", total=len(tasks), stats="")
+            for o in run_tasks(tasks, opts, workers=workers, stop=stop):
+                counts[o.status] += 1
+                if o.status == "rebuilt":
+                    counts[f"rebuilt:{o.reason}"] += 1
+                if o.status == "error":
+                    errors.append(f"{o.category}/{o.seed}: {o.reason}")
+                if o.row is not None:
+                    index.append(o.row)
+                    rows.append(o.row)
+                    if o.written:
+                        counts["repaired"] += bool((o.row["repair"] or {}).get("iterations"))
+                        counts["invalid"] += o.row["valid"] is False
+                rate = sum(counts[k] for k in ("new", "rebuilt", "rewritten", "kept", "error")) / max(
+                    time.perf_counter() - t0, 1e-9)
+                bar.update(job, advance=1, stats=f"{rate:6.1f} obj/s  {counts['repaired']} repaired  "
+                                                 f"{counts['invalid'] + counts['error']} failed")
+    finally:
+        signal.signal(signal.SIGINT, previous)
+        write_index(out, rows)
+    return counts, errors, stop.is_set()
+
+
+def _summary(counts: Counter, errors: list[str], out: Path, validate: bool) -> None:
+    """Print what the run did: written (new, rebuilt, rewritten), kept, repaired, failed."""
+    parts = [f"{counts['new']} new"] if counts["new"] else []
+    if counts["rebuilt"]:
+        why = ", ".join(f"{counts['rebuilt:' + r]} {r}" for r in ("damaged", "incomplete", "missing")
+                        if counts["rebuilt:" + r])
+        parts.append(f"{counts['rebuilt']} rebuilt: {why}")
+    if counts["rewritten"]:
+        parts.append(f"{counts['rewritten']} overwritten")
+    detail = f" ({'; '.join(parts)})" if counts["rebuilt"] or counts["rewritten"] else ""
+    typer.echo(f"{_written(counts)} written{detail}, {counts['kept']} already present, in {out}")
+    if validate and counts["repaired"]:
+        typer.echo(f"{counts['repaired']} repaired")
+    if counts["invalid"]:
+        typer.echo(f"{counts['invalid']} failed validation after repair (see 'validation' in their "
+                   "annotation.json)", err=True)
+    if errors:
+        typer.echo(f"{len(errors)} objects could not be built, e.g. {min(errors)}", err=True)

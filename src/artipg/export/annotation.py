@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+import json
+from pathlib import Path
+
 import numpy as np
 
 import artipg
@@ -40,12 +43,29 @@ def category_fixed_base(name: str) -> bool:
         return False
 
 
-def annotation_dict(obj, grasps=None) -> dict:
+def annotated_fixed_base(annotation: Path) -> bool:
+    """Whether the object of ``annotation`` (an ``annotation.json``, possibly missing)
+    is a fixture: its validation report's ``fixed_base``, else its category's policy."""
+    try:
+        ann = json.loads(Path(annotation).read_text())
+    except (OSError, ValueError):
+        return False
+    if "fixed_base" in ann:
+        return bool(ann["fixed_base"])
+    rep = ann.get("validation") or {}
+    if "fixed_base" in rep:
+        return bool(rep["fixed_base"])
+    return category_fixed_base(str(ann.get("category")))
+
+
+def annotation_dict(obj, grasps=None, files=None) -> dict:
     """Everything about ``obj`` except geometry, as JSON-ready data.
 
     Part poses and grasps are given at the rest state in the object frame (see
     ``docs/annotations.md``); ``grasps`` is a precomputed
     :class:`artipg.annotate.grasps.WorldGrasps` at rest (computed when None).
+    ``files``, the folder's file list (:func:`artipg.io.manifest.file_records`),
+    is stored under ``"files"`` when given.
     """
     from artipg.annotate.grasps import world_grasps
     from artipg.annotate.labels import part_frames
@@ -101,10 +121,11 @@ def annotation_dict(obj, grasps=None) -> dict:
         "joints": joints,
         "parts": parts,
         "validation": obj.report,
+        **({} if files is None else {"files": files}),
     }
 
 
-def annotation_text(obj, grasps=None) -> str:
+def annotation_text(obj, grasps=None, files=None) -> str:
     """``annotation.json`` of ``obj``: :func:`annotation_dict` as JSON indented by one
     space (the text of ``json.dumps(..., indent=1)``)."""
-    return dumps_indented(annotation_dict(obj, grasps), indent=1) + "\n"
+    return dumps_indented(annotation_dict(obj, grasps, files), indent=1) + "\n"

@@ -13,6 +13,7 @@ from artipg.export.annotation import annotation_text
 from artipg.export.npz import npz_bytes
 from artipg.export.semantics import semantics_text
 from artipg.export.urdf import build_urdf, urdf_text
+from artipg.io.manifest import ANNOTATION_NAME, file_records
 
 TMP_PREFIX = ".tmp-"
 
@@ -24,38 +25,53 @@ def point_arrays(obj, n_points: int, seed: int = 0, qpos=None, grasps=True) -> d
     return _arrays(obj, n_points, seed=seed, qpos=qpos, grasps=grasps)
 
 
-def object_files(obj, n_points: int = 2048, views: int = 0, view_points: int = 2048) -> dict[str, bytes]:
+def object_files(obj, n_points: int = 2048, views: int = 0, view_points: int = 2048, formats=None,
+                 actuators: bool = False) -> dict[str, bytes]:
     """All files of the object folder as {relative path: bytes}.
 
     ``views`` > 0 adds ``views.npz`` with that many partial views of ``view_points``
-    points each (rest pose; see ``docs/annotations.md``).
+    points each (rest pose; see ``docs/annotations.md``). ``formats`` (default
+    :data:`artipg.export.formats.DEFAULT_FORMATS`) adds ``mobility.xml`` (``"mjcf"``),
+    ``mobility.usd`` and ``mobility.glb`` beside the URDF, with position servos when
+    ``actuators`` (see ``docs/formats.md``). ``annotation.json`` comes last and lists
+    every other file with its size and hash.
     """
     from artipg.annotate.arrays import view_arrays
     from artipg.annotate.grasps import world_grasps
 
     grasps = world_grasps(obj)
     robot, meshes = build_urdf(obj)
-    files = {"mobility.urdf": urdf_text(robot).encode(), "semantics.txt": semantics_text(obj).encode(),
-             "annotation.json": annotation_text(obj, grasps).encode()}
-    files.update({k: v.encode() for k, v in meshes.items()})
+    files = {"mobility.urdf": urdf_text(robot).encode(), "semantics.txt": semantics_text(obj).encode()}
+    files.update({k: v if isinstance(v, bytes) else v.encode() for k, v in meshes.items()})  # PNGs are bytes
+    if formats is None:
+        from artipg.export.formats import DEFAULT_FORMATS as formats
+    if any(f != "urdf" for f in formats):
+        from artipg.export.asset import object_asset
+        from artipg.export.formats import format_files
+
+        files.update(format_files(object_asset(obj, files["mobility.urdf"].decode(), meshes), formats, actuators))
     if n_points > 0:
         files["points.npz"] = npz_bytes(point_arrays(obj, n_points, grasps=grasps))
     if views > 0:
         files["views.npz"] = npz_bytes(view_arrays(obj, views, view_points, seed=obj.seed))
+    # the file list covers everything above: add files before this line
+    files[ANNOTATION_NAME] = annotation_text(obj, grasps, file_records(files)).encode()
     return files
 
 
 def write_files_atomic(files: dict[str, bytes], dest: Path, overwrite: bool = False) -> Path:
     """Write ``files`` into a temporary sibling of ``dest`` and rename it into place.
 
-    An interrupted write leaves only a ``.tmp-*`` folder, never a half-written ``dest``.
+    An interrupted write leaves only a ``.tmp-*`` folder, never a half-written ``dest``;
+    inside it ``annotation.json`` is written last, so even a folder moved by hand out
+    of an interrupted write is recognisably incomplete (:mod:`artipg.io.manifest`).
     """
     dest = Path(dest)
     dest.parent.mkdir(parents=True, exist_ok=True)
     tmp = Path(tempfile.mkdtemp(prefix=f"{TMP_PREFIX}{dest.name}-", dir=dest.parent))
     try:
         made = {""}
-        for rel, data in files.items():
+        for rel, data in sorted(files.items(), key=lambda kv: kv[0] == ANNOTATION_NAME):
             folder = os.path.dirname(rel)
             if folder not in made:
                 (tmp / folder).mkdir(parents=True, exist_ok=True)
@@ -89,10 +105,14 @@ def _write_file(path: str, data: bytes) -> None:
         os.close(fd)
 
 
-def export_object(obj, dest, n_points: int = 2048, overwrite: bool = False, views: int = 0) -> Path:
+def export_object(obj, dest, n_points: int = 2048, overwrite: bool = False, views: int = 0, formats=None,
+                  actuators: bool = False) -> Path:
     """Write the object folder of ``obj`` at ``dest`` (atomically); ``views`` > 0 adds
-    ``views.npz`` with that many partial views."""
-    return write_files_atomic(object_files(obj, n_points, views=views), Path(dest), overwrite=overwrite)
+    ``views.npz`` with that many partial views; ``formats`` (names of
+    :data:`artipg.export.formats.FORMATS`, default ``DEFAULT_FORMATS``) the simulator
+    files beside the URDF."""
+    files = object_files(obj, n_points, views=views, formats=formats, actuators=actuators)
+    return write_files_atomic(files, Path(dest), overwrite=overwrite)
 
 
 def clean_stale_tmp(folder: Path) -> int:

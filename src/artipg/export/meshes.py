@@ -1,7 +1,9 @@
 """Meshes of links: visual OBJ files and convex collision pieces, plus inertials.
 
 OBJ files are written with a fixed number format so that the same object always gives
-the same bytes.
+the same bytes. Visual OBJ files carry normals, texture coordinates and one ``usemtl``
+group per material (:func:`artipg.appearance.materials_of`); the UVs come from
+:func:`primitive_surface_arrays`, the one place that maps a primitive to texture space.
 
 Collision geometry is one element per convex piece of every primitive
 (:meth:`artipg.geometry.GeometryTemplate.collision`): boxes, cylinders and spheres
@@ -34,6 +36,26 @@ def obj_text(vertices: np.ndarray, faces: np.ndarray) -> str:
     v = ("v %.6f %.6f %.6f\n" * len(vertices)) % tuple(np.asarray(vertices, dtype=float).ravel().tolist())
     f = ("f %d %d %d\n" * len(faces)) % tuple((np.asarray(faces, dtype=np.int64) + 1).ravel().tolist())
     return v + f
+
+
+def obj_surface_text(vertices, normals, uvs, faces, groups, mtllib: str = "materials.mtl") -> str:
+    """Wavefront OBJ text with normals, UVs and material groups.
+
+    ``vertices``, ``normals`` (V, 3), ``uvs`` (V, 2) share one index; ``faces`` (F, 3);
+    ``groups`` is a list of (material name, first face, end face) covering the faces
+    in order.
+    """
+    n = len(vertices)
+    head = f"mtllib {mtllib}\n"
+    v = ("v %.6f %.6f %.6f\n" * n) % tuple(np.asarray(vertices, dtype=float).ravel().tolist())
+    vt = ("vt %.5f %.5f\n" * n) % tuple(np.asarray(uvs, dtype=float).ravel().tolist())
+    vn = ("vn %.4f %.4f %.4f\n" * n) % tuple((np.asarray(normals, dtype=float) + 0.0).ravel().tolist())
+    idx = np.repeat(np.asarray(faces, dtype=np.int64) + 1, 3, axis=1).ravel().tolist()
+    out = [head, v, vt, vn]
+    for name, a, b in groups:
+        out.append(f"usemtl {name}\n")
+        out.append(("f %d/%d/%d %d/%d/%d %d/%d/%d\n" * (b - a)) % tuple(idx[9 * a:9 * b]))
+    return "".join(out)
 
 
 def link_visual_arrays(link, sections: int = 24) -> tuple[np.ndarray, np.ndarray] | None:
@@ -111,6 +133,113 @@ def _mesh_arrays(geom, params, sections):
 
 #: :meth:`GeometryTemplate.mesh_arrays` of a primitive, memoised (read-only arrays).
 primitive_mesh_arrays = PrimitiveCache(_mesh_arrays)
+
+
+#: Faces whose normals differ by less than this angle (degrees) share smooth vertex
+#: normals; sharper edges (a box's) split the vertices.
+CREASE_DEGREES = 40.0
+# texture-space axes (u, v) of faces facing x, y and z in the primitive frame
+_UV_AXES = np.array([[1, 2], [0, 2], [0, 1]])
+
+
+def _cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """Row-wise cross products (N, 3) (``np.cross`` costs several times more on small arrays)."""
+    return np.column_stack([a[:, 1] * b[:, 2] - a[:, 2] * b[:, 1], a[:, 2] * b[:, 0] - a[:, 0] * b[:, 2],
+                            a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0]])
+
+
+def _surface(geom, params, sections):
+    from artipg.appearance.textures import TILE_METRES
+
+    V, F = primitive_mesh_arrays(geom, params, sections)
+    tri = V[F]
+    fn = _cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])  # twice the area times the normal
+    dbl = np.sqrt(np.einsum("ij,ij->i", fn, fn))
+    unit = fn / np.maximum(dbl, 1e-300)[:, None]
+    axis = np.argmax(np.abs(unit), axis=1)
+    # every corner (face f, vertex v) against every corner of the same vertex
+    cv = F.ravel()
+    cf = np.repeat(np.arange(len(F)), 3)
+    order = np.argsort(cv, kind="stable")
+    deg = np.bincount(cv, minlength=len(V))
+    start = np.cumsum(deg) - deg
+    reps = deg[cv]
+    i = np.repeat(np.arange(len(cv)), reps)
+    j = order[np.repeat(start[cv] - (np.cumsum(reps) - reps), reps) + np.arange(len(i))]
+    near = np.einsum("ij,ij->i", unit[cf[i]], unit[cf[j]]) > np.cos(np.radians(CREASE_DEGREES))
+    N = np.zeros((len(cv), 3))
+    np.add.at(N, i[near], fn[cf[j[near]]])
+    N /= np.maximum(np.sqrt(np.einsum("ij,ij->i", N, N)), 1e-300)[:, None]
+    ax = axis[cf]
+    # v along the longer side of the primitive in each plane: grain and brushing follow
+    # a rail, a door or a table top lengthwise, as they do in real ones
+    ext = V.max(axis=0) - V.min(axis=0) if len(V) else np.zeros(3)
+    axes = np.where((ext[_UV_AXES[:, 0]] > ext[_UV_AXES[:, 1]])[:, None], _UV_AXES[:, ::-1], _UV_AXES)
+    uv = np.take_along_axis(V[cv], axes[ax], axis=1) / TILE_METRES
+    # corners with the same vertex, projection and normal (to 1e-3) become one vertex
+    q = np.rint(N * 1000.0).astype(np.int64) + 1024
+    nkey = (q[:, 0] << 22) | (q[:, 1] << 11) | q[:, 2]
+    ckey = cv * 3 + ax
+    srt = np.lexsort((nkey, ckey))
+    new = np.ones(len(srt), dtype=bool)
+    new[1:] = (np.diff(ckey[srt]) != 0) | (np.diff(nkey[srt]) != 0)
+    first = srt[new]
+    inverse = np.empty(len(srt), dtype=np.int64)
+    inverse[srt] = np.cumsum(new) - 1
+    return _readonly(V[cv[first]], N[first], uv[first], inverse.reshape(-1, 3), np.array(0.5 * dbl.sum()))
+
+
+#: Surface of a primitive for rendering, in its local frame: vertices (V, 3) metres,
+#: unit normals (V, 3), texture coordinates (V, 2), faces (F, 3) and the area (m^2, a
+#: 0-d array) (memoised, read-only). Vertices are split along creases sharper than :data:`CREASE_DEGREES` and
+#: where the projection changes. UVs are a box projection in the primitive frame: a
+#: face facing mostly x, y or z takes (y, z), (x, z) or (x, y) divided by
+#: :data:`artipg.appearance.textures.TILE_METRES`, so textures keep their real scale.
+#: This is the one place that maps primitives to texture space (analytic UVs of the
+#: geometry families replace it here).
+primitive_surface_arrays = PrimitiveCache(_surface)
+
+
+def link_visual_surface(link, materials: dict, sections: int = 24):
+    """The visual surface of ``link`` in the link frame, grouped by material.
+
+    Parameters
+    ----------
+    link : Link
+    materials : dict
+        {part name: :class:`artipg.appearance.Material`} (:func:`artipg.appearance.materials_of`).
+
+    Returns
+    -------
+    (vertices (V, 3), normals (V, 3), uvs (V, 2), faces (F, 3), groups) or None for an
+    empty link; ``groups`` lists (Material, first face, end face, area m^2), faces of one
+    material contiguous, in the order of the materials' first parts.
+    """
+    by_mat: dict[str, list] = {}
+    mats = {}
+    for part in link.parts:
+        m = materials[part.name]
+        mats[m.name] = m
+        for prim in part.primitives:
+            by_mat.setdefault(m.name, []).append((part.pose @ prim.pose, prim))
+    if not by_mat:
+        return None
+    Vs, Ns, Us, Fs, groups = [], [], [], [], []
+    nv = nf = 0
+    for name, items in by_mat.items():
+        f0, area = nf, 0.0
+        for T, prim in items:
+            V, N, UV, F, a = primitive_surface_arrays(prim.geom, prim.params, sections)
+            R = T[:3, :3]
+            Vs.append(V @ R.T + T[:3, 3])
+            Ns.append(N @ R.T)
+            Us.append(UV)
+            Fs.append(F + nv)
+            area += float(a)  # poses are rigid
+            nv += len(V)
+            nf += len(F)
+        groups.append((mats[name], f0, nf, area))
+    return np.concatenate(Vs), np.concatenate(Ns), np.concatenate(Us), np.concatenate(Fs), groups
 
 
 def _collision(geom, params):
@@ -233,6 +362,14 @@ def link_inertial(link, sections: int = 24, materials=None) -> tuple[float, np.n
     I1 = np.stack([cp[1] for cp in props])
     coms = (R @ c[:, :, None])[:, :, 0] + T[:, :3, 3]
     inertias = m[:, None, None] * (R @ I1 @ R.transpose(0, 2, 1))
+    return combine_inertials(masses, coms, inertias)
+
+
+def combine_inertials(masses, coms: np.ndarray, inertias: np.ndarray) -> tuple[float, np.ndarray, np.ndarray]:
+    """Mass (kg), centre of mass (3,) and inertia (3, 3) about it of rigidly joined
+    bodies: ``masses`` (n,) kg, ``coms`` (n, 3) and ``inertias`` (n, 3, 3) about their
+    own centres of mass, all in one frame (parallel axis theorem)."""
+    m = np.asarray(masses, dtype=float)
     M = float(sum(masses))
     com = np.sum(m[:, None] * coms, axis=0) / M
     d = coms - com

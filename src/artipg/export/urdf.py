@@ -3,6 +3,11 @@
 Links get one visual mesh, one collision element per convex piece (native box,
 cylinder and sphere where possible) and an inertial from the geometry. A ``<mujoco>``
 block lets MuJoCo import visuals and keep links separate.
+
+Visual meshes are OBJ files with normals, UVs and one ``usemtl`` group per material,
+sharing ``meshes/materials.mtl``; texture images go to ``textures/``. A URDF visual
+holds a single ``<material>``: each link's visual names the material covering most of
+its surface (its colour, and its texture file); the OBJ groups carry all of them.
 """
 
 from __future__ import annotations
@@ -11,7 +16,9 @@ import xml.etree.ElementTree as ET
 
 import numpy as np
 
-from artipg.export.meshes import link_collision_entries, link_inertial, link_visual_arrays, obj_text
+from artipg.export.asset import effective_inertia
+from artipg.export.meshes import (link_collision_entries, link_inertial, link_visual_surface, obj_surface_text,
+                                  obj_text)
 from artipg.geometry.transforms import matrix_to_rpy
 
 
@@ -35,21 +42,45 @@ DAMPING_TIME = 0.25
 def joint_damping(jtype: str, axis: np.ndarray, mass: float, com: np.ndarray, inertia: np.ndarray) -> float:
     """Viscous damping of a joint (N*s/m or N*m*s/rad) from its child link's mass
     properties in the joint frame (mass kg, centre of mass (3,), inertia (3, 3) about it)."""
-    a = np.asarray(axis, dtype=float)
-    if jtype == "prismatic":
-        eff = mass
-    else:  # inertia about the joint axis through the joint origin (parallel axis theorem)
-        c = np.asarray(com, dtype=float)
-        eff = float(a @ inertia @ a) + mass * (float(c @ c) - float(a @ c) ** 2)
-    return max(eff / DAMPING_TIME, 1e-6)
+    return max(effective_inertia(jtype, axis, mass, com, inertia) / DAMPING_TIME, 1e-6)
 
 
-def build_urdf(obj, sections: int = 24, visuals: bool = True) -> tuple[ET.Element, dict[str, str]]:
-    """URDF tree and mesh files {relative path: OBJ text} for ``obj``.
+def _material(parent: ET.Element, material) -> None:
+    """A URDF ``<material>`` of an :class:`artipg.appearance.Material` inside ``parent``."""
+    el = ET.SubElement(parent, "material", name=material.name)
+    ET.SubElement(el, "color", rgba=_fmt(material.rgba))
+    if material.texture_file:
+        ET.SubElement(el, "texture", filename=material.texture_file)
 
-    ``visuals=False`` leaves out the visual meshes (simulation-only URDFs, faster).
+
+def visual_files(obj, surfaces: dict) -> dict[str, str | bytes]:
+    """The MTL file and texture images {relative path: text or PNG bytes} of the
+    materials used in ``surfaces`` ({link name: :func:`link_visual_surface` result})."""
+    from artipg.appearance import texture_png
+
+    used = {}
+    for surf in surfaces.values():
+        for m, *_ in surf[4]:
+            used.setdefault(m.name, m)
+    files: dict[str, str | bytes] = {"meshes/materials.mtl": "".join(m.mtl_text() + "\n" for m in used.values())}
+    for m in used.values():
+        if m.texture_file:
+            files[m.texture_file] = texture_png(m)
+    return files
+
+
+def build_urdf(obj, sections: int = 24, visuals: bool = True) -> tuple[ET.Element, dict[str, str | bytes]]:
+    """URDF tree and its files {relative path: OBJ or MTL text, or PNG bytes} for ``obj``.
+
+    ``visuals=False`` leaves out the visual meshes, materials and textures
+    (simulation-only URDFs, faster; every file is text then).
     """
-    files: dict[str, str] = {}
+    files: dict[str, str | bytes] = {}
+    surfaces = {}
+    if visuals:
+        from artipg.appearance import materials_of
+
+        mats = materials_of(obj)
     robot = ET.Element("robot", name=f"{obj.category}_{obj.seed}")
     mj = ET.SubElement(robot, "mujoco")
     ET.SubElement(mj, "compiler", discardvisual="false", fusestatic="false", strippath="false",
@@ -63,13 +94,15 @@ def build_urdf(obj, sections: int = 24, visuals: bool = True) -> tuple[ET.Elemen
         ET.SubElement(inertial, "mass", value=f"{mass:.9g}")
         ET.SubElement(inertial, "inertia", ixx=f"{I[0, 0]:.9g}", ixy=f"{I[0, 1]:.9g}", ixz=f"{I[0, 2]:.9g}",
                       iyy=f"{I[1, 1]:.9g}", iyz=f"{I[1, 2]:.9g}", izz=f"{I[2, 2]:.9g}")
-        vm = link_visual_arrays(link, sections) if visuals else None
-        if vm is not None:
+        surf = link_visual_surface(link, mats, sections) if visuals else None
+        if surf is not None:
+            surfaces[link.name] = surf
             path = f"meshes/{link.name}.obj"
-            files[path] = obj_text(*vm)
+            files[path] = obj_surface_text(*surf[:4], [(m.name, a, b) for m, a, b, _ in surf[4]])
             vis = ET.SubElement(el, "visual", name=f"{link.name}_visual")
             _origin(vis, np.eye(4))
             ET.SubElement(ET.SubElement(vis, "geometry"), "mesh", filename=path)
+            _material(vis, max(surf[4], key=lambda g: g[3])[0])
         written: dict[tuple[int, int], str] = {}
         for k, (piece, T, prim) in enumerate(link_collision_entries(link)):
             col = ET.SubElement(el, "collision", name=f"{link.name}_c{k}")
@@ -100,6 +133,8 @@ def build_urdf(obj, sections: int = 24, visuals: bool = True) -> tuple[ET.Elemen
         if j.type != "fixed":
             damping = joint_damping(j.type, j.axis, *inertials[j.child])
             ET.SubElement(el, "dynamics", damping=f"{damping:.6g}", friction="0.0")
+    if surfaces:
+        files.update(visual_files(obj, surfaces))
     ET.indent(robot)
     return robot, files
 

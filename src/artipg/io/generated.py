@@ -20,36 +20,46 @@ import numpy as np
 from artipg.io.dataset import ObjectSet
 from artipg.io.structure import ObjectStructure
 
-#: Per category, the range of values (radians for revolute, metres for prismatic) of the
-#: movable joints of each listed type in the pose PartNet-Mobility models the category
-#: in; each object draws its own value uniformly from the range (the modellers left
-#: each object at its own angle). Categories not listed are modelled at rest (closed).
-#: Laptops: screens open between 90 and 135 degrees (1.57-2.36 rad, the closing ranges
-#: of the development split's laptops).
-PARTNET_POSE = {"laptop": {"revolute": (1.57, 2.36)}}
+#: Per category, the pose PartNet-Mobility models its objects in, as ranges for the
+#: movable joints whose child link name starts with a given prefix: ``("value", lo,
+#: hi)`` in the joint's units (radians, metres) or ``("fraction", lo, hi)`` of the
+#: joint's range, with an optional fourth item, the share of objects so modelled (the
+#: others at rest). Each object draws its values from its own seed, so the modelled
+#: poses vary as the modellers left them; joints not listed stay at 0 (rest). From the
+#: development split: laptop screens open 90-135 degrees (their closing ranges,
+#: 1.57-2.36 rad); bucket bails stand up in 4 of 7 (within about 20 degrees of
+#: upright, the middle of artipg's back-to-front swing) and lie down in the others.
+PARTNET_POSE = {
+    "laptop": {"screen": ("value", 1.57, 2.36)},
+    "bucket": {"handle": ("fraction", 0.4, 0.6, 0.6)},
+}
 
 POSES = ("rest", "partnet")
 
-#: Stream key of the modelled-pose draw (independent of generation and point sampling).
+#: Stream key of the modelled-pose draws (independent of generation and point sampling).
 _POSE_STREAM = 0x9A57
 
 
 def partnet_qpos(obj, category: str) -> dict:
-    """Joint values (name -> value) of ``obj`` in PartNet-Mobility's modelled pose.
-
-    For a listed category every movable joint of a listed type takes a value drawn
-    from the type's range (the same value for every such joint of the object; one draw
-    per object seed), clipped to the joint's limits; everything else stays at 0.
-    """
+    """Joint values (name -> value) of ``obj`` in PartNet-Mobility's modelled pose of
+    ``category`` (:data:`PARTNET_POSE`), clipped to each joint's limits; joints not
+    listed are left out (rest, 0)."""
     rule = PARTNET_POSE.get(category, {})
     if not rule:
         return {}
-    u = np.random.default_rng([int(obj.seed), _POSE_STREAM]).random()
+    rng = np.random.default_rng([int(obj.seed), _POSE_STREAM])
     q = {}
     for j in obj.movable_joints:
-        if j.type in rule:
-            lo, hi = rule[j.type]
-            q[j.name] = float(np.clip(lo + u * (hi - lo), *j.limits))
+        spec = next((v for prefix, v in rule.items() if j.child.startswith(prefix)), None)
+        if spec is None:
+            continue
+        kind, a, b, share = (*spec, 1.0)[:4]
+        if rng.random() >= share:
+            continue
+        lo, hi = j.limits
+        if kind == "fraction":
+            a, b = lo + a * (hi - lo), lo + b * (hi - lo)
+        q[j.name] = float(np.clip(a + rng.random() * (b - a), lo, hi))
     return q
 
 

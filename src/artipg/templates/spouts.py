@@ -130,14 +130,15 @@ def _collar(p, mount: float):
     return c, t, ri, ring(ri + t, ri, c, role="collar")
 
 
-def collar_spout(p, mount: float, max_tip: float = 0.04) -> Part:
-    """Collar around a column with a tube reaching forward and turning down at the tip
-    (tip bend radius at most ``max_tip``, which bounds how far the tip drops)."""
+def collar_spout(p, mount: float, max_tip: float = 0.04, run: tuple = (0.05, 0.14)) -> Part:
+    """Collar around a column with a tube reaching forward ``run`` (range, metres) and
+    turning down at the tip (tip bend radius at most ``max_tip``, which bounds how far
+    the tip drops)."""
     c, t, ri, col = _collar(p, mount)
     r = min(p.uniform("radius", 0.007, 0.012), 0.45 * c, math.sqrt(ri * t + 0.7 * t * t))
     x0 = -(ri + t / 2)
     tip = p.uniform("tip_radius", min(0.015, max_tip), min(0.04, max_tip))
-    segs = [line(p.uniform("run", 0.05, 0.14)), arc(tip, p.uniform("tip_turn", 0.3, 0.5) * math.pi)]
+    segs = [line(p.uniform("run", *run)), arc(tip, p.uniform("tip_turn", 0.3, 0.5) * math.pi)]
     T = translation(x0, 0, 0)
     x, z, a = _path_end(segs, math.pi)
     prims = [col] + tube(r, segs, math.pi, T, role="tube")
@@ -145,11 +146,12 @@ def collar_spout(p, mount: float, max_tip: float = 0.04) -> Part:
                   {"collar_top": (0.0, 0.0, c / 2)})
 
 
-def waterfall_spout(p, mount: float, max_tip: float = 0.04) -> Part:
-    """Collar with a flat, wide box spout (a waterfall lip) reaching forward; the lip
-    does not drop (``max_tip`` is accepted so collar spouts are interchangeable)."""
+def waterfall_spout(p, mount: float, max_tip: float = 0.04, run: tuple = (0.06, 0.14)) -> Part:
+    """Collar with a flat, wide box spout (a waterfall lip) reaching forward ``run``
+    (range, metres); the lip does not drop (``max_tip`` is accepted so collar spouts
+    are interchangeable)."""
     c, t, ri, col = _collar(p, mount)
-    L = p.uniform("run", 0.06, 0.14)
+    L = p.uniform("run", *run)
     w = p.uniform("width", 0.03, 0.06)
     th = min(p.uniform("thickness", 0.008, 0.015), c)
     x0 = -(ri + t / 2)

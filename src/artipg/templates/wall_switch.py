@@ -1,6 +1,7 @@
 """Wall-switch templates: cover plates, rocker paddles with their bezels, and toggles.
 
-Plate frame: the plate stands in the y-z plane, back face on the wall at x = 0,
+Plate frame (plates and surface-mounted boxes): the plate stands in the y-z plane,
+back face on the wall at x = 0,
 front facing -x, centred on y = z = 0; anchor ``face`` is the centre of the surface
 that switch modules mount on (x < 0).
 
@@ -60,9 +61,19 @@ def framed_plate(p, width: float, height: float) -> Part:
                                           role="insert")], -ti)
 
 
+def surface_box(p, width: float, height: float, depth: float = 0.05) -> Part:
+    """Surface-mounted switch box: a deep box (``depth`` metres out of the wall) with a
+    cover plate a little larger than the box on its front."""
+    t = p.uniform("cover_thickness", 0.003, 0.006)
+    lip = p.uniform("cover_lip", 0.001, 0.004)
+    box = cuboid(depth - t, width - 2 * lip, height - 2 * lip, translation(-(depth - t) / 2, 0, 0), role="box")
+    return _plate("surface_box", [box, cuboid(t, width, height, translation(t / 2 - depth, 0, 0), role="plate")],
+                  -depth)
+
+
 PLATES = {flat_plate: 2.0, stepped_plate: 1.5, framed_plate: 1.5}
 #: plate template -> margin it needs around the switch modules (metres)
-PLATE_MARGIN = {flat_plate: 0.008, stepped_plate: 0.01, framed_plate: 0.012}
+PLATE_MARGIN = {flat_plate: 0.008, stepped_plate: 0.01, framed_plate: 0.012, surface_box: 0.01}
 
 
 def flat_rocker(p, width: float, height: float) -> Part:

@@ -27,6 +27,7 @@ from artipg.validate.checks import Tolerances, run_checks
 from artipg.validate.kinematics import Kinematics
 from artipg.validate.report import Report
 from artipg.validate.shapes import Pieces
+from artipg.export.annotation import annotated_fixed_base
 
 #: Largest difference (metres / radians) between a folder's URDF joints and the
 #: regenerated object's for the exact path to be used.
@@ -112,23 +113,6 @@ def validate_folder(folder, tol: Tolerances = Tolerances(), simulate: bool = Tru
 
         report.checks["simulator"] = simulate_urdf(urdf, sim_options or SimOptions(), fixed_base)
     return report, meta
-
-
-def annotated_fixed_base(annotation: Path) -> bool:
-    """Whether the object of ``annotation`` (an ``annotation.json``, possibly missing)
-    is a fixture: its validation report's ``fixed_base``, else its category's policy."""
-    from artipg.export.annotation import category_fixed_base
-
-    try:
-        ann = json.loads(Path(annotation).read_text())
-    except (OSError, ValueError):
-        return False
-    if "fixed_base" in ann:
-        return bool(ann["fixed_base"])
-    rep = ann.get("validation") or {}
-    if "fixed_base" in rep:
-        return bool(rep["fixed_base"])
-    return category_fixed_base(str(ann.get("category")))
 
 
 # ------------------------------------------------------------------ artipg folders
