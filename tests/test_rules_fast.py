@@ -279,33 +279,41 @@ def test_placer_is_the_translation_product():
 
 
 def test_primitive_constructors_make_the_named_tuple():
-    import importlib
+    """The thin constructors write their rows out: the same named tuple, with float
+    parameters, as the families' general constructors make."""
+    import math
 
-    base, box, prism, revolve, tube = (importlib.import_module(f"artipg.geometry.{m}")  # geometry.prism is a function too
-                                       for m in ("base", "box", "prism", "revolve", "tube"))
+    from artipg.geometry import base, extrusion as ex, lathe as la, profile, rounded_box as rb
+    from artipg.geometry.tube import arc, line, tube
+
     T = translation(0.1, -0.2, 0.3)
     f32, i64 = np.float32(0.25), np.int64(2)
+    h = 0.1
     cases = [
-        (box.cuboid(0.1, f32, i64, T, "r"), (box.Cuboid, (0.1, float(f32), 2.0), T, "r")),
-        (box.cuboid_between((0, -0.5, f32), np.array([1.0, 0.5, 2.0])),
-         (box.Cuboid, (1.0, 1.0, 2.0 - float(f32)), translation(0.5, 0.0, 0.5 * (float(f32) + 2.0)), "")),
-        (box.rect_ring(1, 2, 3, 0.5, 0.25), (box.RectRing, (1.0, 2.0, 3.0, 0.5, 0.25), IDENTITY, "")),
-        (prism.prism(0.1, 0.2, 6, T), (prism.Prism, (0.1, 0.2, 6.0), T, "")),
-        (prism.tri_prism(0.1, 0.2, 0.0, 0.3), (prism.TriPrism, (0.1, 0.2, 0.0, 0.3), IDENTITY, "")),
-        (revolve.cylinder(0.1, 0.2, role="c"), (revolve.Frustum, (0.1, 0.1, 0.2, 1.0, 1.0), IDENTITY, "c")),
-        (revolve.frustum(0.1, f32, 0.2), (revolve.Frustum, (0.1, float(f32), 0.2, 1.0, 1.0), IDENTITY, "")),
-        (revolve.ring(0.2, 0.1, 0.3, 1.0, T, "w", 0.01), (revolve.Ring, (0.2, 0.1, 0.3, 1.0, 0.01), T, "w")),
-        (revolve.sphere(0.2, -0.1, 0.1), (revolve.Sphere, (0.2, -0.1, 0.1), IDENTITY, "")),
-        (revolve.torus(0.2, 0.05, 1.0, T, "t", (1.0, 0.0)), (revolve.Torus, (0.2, 0.05, 1.0, 1.0, 0.0), T, "t")),
+        (rb.cuboid(0.1, f32, i64, T, "r"), rb.rounded_box(0.1, float(f32), 2.0, 0.0, T, "r")),
+        (rb.cuboid_between((0, -0.5, f32), np.array([1.0, 0.5, 2.0])),
+         rb.rounded_box(1.0, 1.0, 2.0 - float(f32), 0.0, translation(0.5, 0.0, 0.5 * (float(f32) + 2.0)))),
+        (ex.rect_ring(1, 2, 3, 0.5, 0.25), ex.extrusion([profile.rectangle(1, 2), profile.rectangle(0.5, 0.25)], 3.0)),
+        (ex.prism(0.1, 0.2, 6, T), ex.extrusion([profile.regular_polygon(0.1, 6)], 0.2, pose=T)),
+        (ex.tri_prism(0.1, 0.2, 0.0, 0.3), ex.extrusion([profile.polygon([[-0.05, 0], [0.05, 0], [0, 0.2]])], 0.3)),
+        (la.cylinder(0.1, 0.2, role="c"), la.lathe(profile.polygon([[0, -h], [0.1, -h], [0.1, h], [0, h]]),
+                                                   on=[1, 1, 1, 0], role="c")),
+        (la.frustum(0.1, f32, 0.2), la.lathe(profile.polygon([[0, -h], [0.1, -h], [f32, h], [0, h]]), on=[1, 1, 1, 0])),
+        (la.ring(0.2, 0.1, 0.3, 1.0, T, "w", 0.01),
+         la.lathe(profile.polygon([[0.1, -0.15], [0.2, -0.15], [0.21, 0.15], [0.11, 0.15]]), 1.0, pose=T, role="w")),
+        (la.sphere(0.2, -0.1, 0.1), la.lathe([[0, -0.1, 0], [math.sqrt(0.03), -0.1, math.tan(math.asin(0.5) / 2)],
+                                              [math.sqrt(0.03), 0.1, 0], [0, 0.1, 0]])),
+        (la.torus(0.2, 0.05, 1.0, T, "t", (1.0, 0.0)),
+         la.lathe([[0.25, 0, 1], [0.15, 0, 1]], 1.0, caps=(1.0, 0.0), pose=T, role="t")),
     ]
-    for got, (geom, params, pose, role) in cases:
-        ref = base.Primitive(geom, params, pose, role)
+    for got, ref in cases:
         assert type(got) is base.Primitive and got._fields == ref._fields
-        assert (got.geom, got.params, got.role) == (ref.geom, ref.params, ref.role)
-        assert [type(v) for v in got.params] == [float] * len(params)
+        assert got.geom is ref.geom and got.role == ref.role
+        np.testing.assert_allclose(got.params, ref.params, rtol=1e-15, atol=1e-17)
+        assert [type(v) for v in got.params] == [float] * len(ref.params)
         assert got.pose.tobytes() == ref.pose.tobytes()
-    for got in tube.tube(0.01, [tube.line(0.1), tube.arc(0.05, 1.0)], pose=T, role="tube"):
-        assert type(got) is base.Primitive and got.role == "tube" and got.geom in (revolve.Frustum, revolve.Torus)
+    for got in tube(0.01, [line(0.1), arc(0.05, 1.0)], pose=T, role="tube"):
+        assert type(got) is base.Primitive and got.role == "tube" and got.geom.kind == "lathe"
 
 
 def test_part_bounds_are_the_stacked_min_max():

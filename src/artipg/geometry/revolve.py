@@ -113,15 +113,6 @@ def _revolve_topology(P: int, on_axis: tuple, n_sec: int, n_th: int, closed_prof
     return used, F
 
 
-def _arc_bounds(r_lo, r_hi, arc, z0, z1):
-    """Bounding box of an annular sector r_lo..r_hi, 0..arc, extruded over z0..z1."""
-    arc = min(float(arc), FULL)
-    angles = [0.0, arc] + [a for a in (0.5 * np.pi, np.pi, 1.5 * np.pi) if a < arc]
-    pts = [(r * math.cos(a), r * math.sin(a)) for a in angles for r in (r_lo, r_hi)]
-    xy = np.array(pts)
-    return np.array([[xy[:, 0].min(), xy[:, 1].min(), z0], [xy[:, 0].max(), xy[:, 1].max(), z1]])
-
-
 def _turn_boxes(r, z0, z1):
     """Boxes (M, 2, 3) of full turns of radius ``r`` over z0..z1: a square footprint."""
     out = np.empty((len(r), 2, 3))
