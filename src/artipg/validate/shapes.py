@@ -325,17 +325,20 @@ def sample_surface(geom, P: np.ndarray, rng: np.random.Generator) -> tuple[np.nd
     cell = np.arange(M * C).repeat(n.ravel())  # (piece, component) of each sample, piece-major
     row = cell // C
     comp = cell % C
-    blocks = geom.patches(P)
-    area = np.concatenate([b.area for b in blocks])  # (patches, M)
-    pcomp = np.concatenate([b.comp for b in blocks])
-    which = pick(np.where(pcomp[None, :] == comp[:, None], area.T[row], 0.0), rng)
-    pts = np.empty((len(row), 3))
-    start = 0
-    for b in blocks:
-        sel = np.flatnonzero((which >= start) & (which < start + len(b.comp)))
-        if len(sel):
-            pts[sel] = sample_family(b.family, b.params[which[sel] - start, :, row[sel]].T, rng)[:3].T
-        start += len(b.comp)
+    if geom.regions(P):  # planar faces bounded by arcs (sampled by rejection): the family's own sampler
+        pts = geom.sample_components(P[row], comp, rng)[0]
+    else:
+        blocks = geom.patches(P)
+        area = np.concatenate([b.area for b in blocks])  # (patches, M)
+        pcomp = np.concatenate([b.comp for b in blocks])
+        which = pick(np.where(pcomp[None, :] == comp[:, None], area.T[row], 0.0), rng)
+        pts = np.empty((len(row), 3))
+        start = 0
+        for b in blocks:
+            sel = np.flatnonzero((which >= start) & (which < start + len(b.comp)))
+            if len(sel):
+                pts[sel] = sample_family(b.family, b.params[which[sel] - start, :, row[sel]].T, rng)[:3].T
+            start += len(b.comp)
     count = n.sum(axis=1)
     box = np.flatnonzero(P[:, 3] == 0.0) if geom is BOX else np.zeros(0, dtype=np.int64)
     if not len(box):
