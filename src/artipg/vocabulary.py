@@ -46,6 +46,8 @@ SEMANTIC_LABELS: tuple[str, ...] = (
     "nozzle",
     "lens",        # eyeglass lens
     "touchpad",    # laptop touchpad
+    "stand",       # display neck / column / height carriage, globe stand
+    "sphere",      # globe ball
 )
 
 LABEL_ID: dict[str, int] = {name: i for i, name in enumerate(SEMANTIC_LABELS)}
