@@ -44,11 +44,17 @@ def stand(ctx):
     W = p.uniform("screen_width", *ws)
     H = W / p.choice("aspect", TV_ASPECTS if ctx.sub == "tv" else MONITOR_ASPECTS) + 0.01
     pivot = W < 0.65 and W / H < 2.0 and p.flag("pivot", p_pivot)  # 27 in at most, no ultrawides
+    nw, nd = p.uniform("neck_width", 0.04, 0.08), p.uniform("neck_depth", 0.02, 0.045)
+    rb = p.uniform("barrel_radius", 0.007, 0.012)
+    ergo = ctx.sub == "ergonomic_monitor"
+    reach = p.uniform("reach", 0.05, 0.09) if ergo else nd / 2 + p.uniform("reach", 0.02, 0.05)
+    # the screen's centre of mass lies about ``ahead`` in front of the neck's axis; the
+    # neck stands that far behind the base's centre, where the base allows
+    ahead = reach + 0.025 + (nd / 2 + 0.026 + 2 * rb if ergo else 0.0)
     root = ctx.builder.create_link("base")
     base = root.add(ctx.choose("base", BASES)(p.scope("base"), p.uniform("base_width", *wb),
-                                              p.uniform("base_depth", *db)))
+                                              p.uniform("base_depth", *db), 0.85 * ahead))
     xm, _, zt = base.anchors["mount"]
-    nw, nd = p.uniform("neck_width", 0.04, 0.08), p.uniform("neck_depth", 0.02, 0.045)
     link, ox, oz = root, 0.0, 0.0  # link carrying the neck, and its frame's origin
     z0 = zt  # foot of the neck
     if p.flag("swivel", p_swivel):
@@ -57,13 +63,11 @@ def stand(ctx):
         link.set_joint("revolute", translation(xm, 0, zt), axis=(0.0, 0.0, 1.0), limits=(-hi, hi))
         tt = link.add(turntable(p.scope("turntable"), 0.6 * max(nw, nd) + p.uniform("turntable_margin", 0.005, 0.015)))
         z0 = zt + tt.anchors["top"][2]
-    rb = p.uniform("barrel_radius", 0.007, 0.012)
     gap = p.uniform("low_gap", 0.03, 0.1)  # the screen's bottom edge over the base, at its lowest
     if ctx.sub != "ergonomic_monitor":
         zh = zt + gap + H / 2  # tilt axis = screen centre height; the barrel sits on the neck
         link.add(ctx.choose("neck", NECKS)(p.scope("neck"), zh - rb - 0.0005 - z0, nw, nd),
                  translation(xm - ox, 0, z0 - oz))
-        reach = nd / 2 + p.uniform("reach", 0.02, 0.05)
         return link, (xm - ox, zh - oz), -nd / 2, reach, rb, W, H, pivot, 0.0  # nothing behind above the axis
     # at rest the turning screen's corners (half its diagonal from the axis) clear the base
     lo = max(0.1, math.hypot(W, H) / 2 - H / 2 - gap + 0.015) if pivot else 0.1
@@ -78,7 +82,7 @@ def stand(ctx):
     xf = carriage.add(height_carriage(p.scope("carriage"), 0.9 * nw, ch)).anchors["front"][0]
     # the column stands up to ``over`` above the tilt axis (carriage at its lowest)
     over = top - zh + travel
-    return carriage, (xf - rb - 0.0005, 0.0), rb + 0.0005, p.uniform("reach", 0.05, 0.09), rb, W, H, pivot, over
+    return carriage, (xf - rb - 0.0005, 0.0), rb + 0.0005, reach, rb, W, H, pivot, over
 
 
 def _tilt_limit(L, b, e):

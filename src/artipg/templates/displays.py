@@ -29,25 +29,28 @@ _ALONG_Y = Placer(np.array([[1.0, 0, 0, 0], [0, 0, -1, 0], [0, 1, 0, 0], [0, 0, 
 _LIFT = Region(("plate", "foot", "hub"))
 
 
-def plate_base(p, width: float, depth: float) -> Part:
-    """Rectangular plate base; the neck stands towards its back edge."""
+def plate_base(p, width: float, depth: float, mount: float) -> Part:
+    """Rectangular plate base; the neck stands ``mount`` behind its centre (at most
+    30 mm from the back edge)."""
     t = p.uniform("thickness", 0.008, 0.02)
-    xm = depth / 2 - p.uniform("back_margin", 0.25, 0.4) * depth
+    xm = min(mount, depth / 2 - 0.03)
     return Part("base", "plate_base", [cuboid(depth, width, t, translation(0, 0, t / 2), role="plate")],
                 anchors={"top": (0.0, 0.0, t), "mount": (xm, 0.0, t)}, regions={"lift": _LIFT})
 
 
-def disc_base(p, width: float, depth: float) -> Part:
-    """Round disc base of diameter ``min(width, depth)``; the neck stands behind its centre."""
-    r = min(width, depth) / 2
+def disc_base(p, width: float, depth: float, mount: float) -> Part:
+    """Round disc base of diameter ``max(width, depth)``; the neck stands ``mount``
+    behind its centre (at most 30 mm from the edge)."""
+    r = max(width, depth) / 2
     t = p.uniform("thickness", 0.008, 0.018)
-    xm = p.uniform("mount_offset", 0.2, 0.4) * r
+    xm = min(mount, r - 0.03)
     return Part("base", "disc_base", [cylinder(r, t, translation(0, 0, t / 2), role="plate")],
                 anchors={"top": (0.0, 0.0, t), "mount": (xm, 0.0, t)}, regions={"lift": _LIFT})
 
 
-def v_base(p, width: float, depth: float) -> Part:
-    """Two feet splayed forward from a round hub at the back (a V seen from above)."""
+def v_base(p, width: float, depth: float, mount: float) -> Part:
+    """Two feet splayed forward from a round hub at the back (a V seen from above);
+    the neck stands on the hub (``mount`` is not used)."""
     t = p.uniform("thickness", 0.01, 0.02)
     fw = p.uniform("foot_width", 0.025, 0.045)
     rh = p.uniform("hub_radius", 0.03, 0.045)
