@@ -59,7 +59,7 @@ def body(ctx):
     skirt = 0.0 if lp is None else 0.012 - lp.anchors["hinge"][2]
     skirt += {"travel_mug": 0.022, "beer_stein": 0.015}.get(ctx.sub, 0.0)
     zt = H - skirt - p.uniform("top_gap", 0.008, 0.02)
-    zb = zt - p.uniform("span", *span) * H
+    zb = max(zt - p.uniform("span", *span) * H, 0.022)  # the handle's lower bend stays off the table
     h = ctx.choose("handle", HANDLES)(p.scope("handle"), wall_radius(part, zt), zt, wall_radius(part, zb), zb)
     root.add(h, TURN)
     return root, part, h, lp
