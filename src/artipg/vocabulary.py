@@ -48,6 +48,8 @@ SEMANTIC_LABELS: tuple[str, ...] = (
     "touchpad",    # laptop touchpad
     "stand",       # display neck / column / height carriage, globe stand
     "sphere",      # globe ball
+    "clip",        # pen pocket clip
+    "refill",      # pen refill point
 )
 
 LABEL_ID: dict[str, int] = {name: i for i, name in enumerate(SEMANTIC_LABELS)}
