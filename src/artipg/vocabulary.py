@@ -49,7 +49,7 @@ SEMANTIC_LABELS: tuple[str, ...] = (
     "stand",       # display neck / column / height carriage, globe stand
     "sphere",      # globe ball
     "clip",        # pen pocket clip
-    "refill",      # pen refill point
+    "refill",      # pen refill point, glue stick column
 )
 
 LABEL_ID: dict[str, int] = {name: i for i, name in enumerate(SEMANTIC_LABELS)}
