@@ -50,6 +50,8 @@ SEMANTIC_LABELS: tuple[str, ...] = (
     "sphere",      # globe ball
     "clip",        # pen pocket clip
     "refill",      # pen refill point, glue stick column
+    "connector",   # USB plug, its sliding carriage
+    "cover",       # swivel cover of a flash drive
 )
 
 LABEL_ID: dict[str, int] = {name: i for i, name in enumerate(SEMANTIC_LABELS)}
