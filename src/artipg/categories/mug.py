@@ -5,8 +5,8 @@ category has a lid or a drink-opening cover (the fixed body, handle and lid of a
 mug are the same templates).
 Parts: an open body (straight, widening towards the rim, or with a foot ring and rim
 band) with a side handle (round C, moulded D or round loop ear; optional on travel
-mugs). Lidded mugs carry a flat, domed or knobbed lid hinged at the back, over the
-handle; beer steins a pewter lid (flat or domed) hinged on two cheeks standing on the
+mugs). Lidded mugs carry a flat, knobbed or domed lid with a plug inside the rim,
+hinged at the back, over the handle; beer steins a pewter lid (flat or domed) hinged on two cheeks standing on the
 handle's top, with a thumb lever rising from the hinge knuckle; travel mugs a
 screw-on lid (modelled fixed) with a raised deck and a drink opening under a slider
 between two rails or a flip flap.
@@ -28,13 +28,12 @@ from artipg.geometry.transforms import rot_z, translation
 from artipg.model.part import Part
 from artipg.rules import Category, Slot
 from artipg.templates.cookware import block_c_handle, c_handle
-from artipg.templates.lids import domed_lid, flat_lid, knobbed_lid, mount_lid
-from artipg.templates.mugs import (BODIES, conical_body, flip_cover, loop_handle, slide_cover, slide_rails, stein_lid,
-                                   straight_body, travel_lid, wall_radius)
+from artipg.templates.lids import mount_lid
+from artipg.templates.mugs import (BODIES, PLUG_LIDS, conical_body, flip_cover, loop_handle, slide_cover, slide_rails,
+                                   stein_lid, straight_body, travel_lid, wall_radius)
 
 TURN = rot_z(math.pi / 2)  # built with the handle at +x; turned so the front view (-x) shows the profile
 HANDLES = {loop_handle: 2.0, c_handle: 1.5, block_c_handle: 1.0}
-MUG_LIDS = {flat_lid: 2.0, domed_lid: 1.5, knobbed_lid: 1.0}
 TRAVEL_BODIES = {conical_body: 2.0, straight_body: 1.0}
 COVERS = {"slide": 1.0, "flip": 1.0}
 # sub-category -> bottom radius, height, bodies, P(handle), handle span / height
@@ -52,12 +51,12 @@ def body(ctx):
     root.add(part, TURN)
     lp = None
     if ctx.sub == "lidded_mug":  # chosen here: the handle stays below the lid's skirt
-        lp = ctx.choose("lid", MUG_LIDS)(p.scope("lid"), part.anchors["lip"][0])
+        inner = part.anchors["radii"][1] - part.anchors["wall"][0]
+        lp = ctx.choose("lid", PLUG_LIDS)(p.scope("lid"), part.anchors["lip"][0], inner)
     if not p.flag("handle", p_handle):
         return root, part, None, lp
     # below a travel lid's skirt, or a mug lid's skirt and the handle's half thickness
-    skirt = 0.0 if lp is None else 0.012 - lp.anchors["hinge"][2]
-    skirt += {"travel_mug": 0.022, "beer_stein": 0.015}.get(ctx.sub, 0.0)
+    skirt = {"travel_mug": 0.022, "beer_stein": 0.015, "lidded_mug": 0.012}[ctx.sub]
     zt = H - skirt - p.uniform("top_gap", 0.008, 0.02)
     zb = max(zt - p.uniform("span", *span) * H, 0.022)  # the handle's lower bend stays off the table
     h = ctx.choose("handle", HANDLES)(p.scope("handle"), wall_radius(part, zt), zt, wall_radius(part, zb), zb)

@@ -8,6 +8,8 @@ Frames (metres, +z up):
 - ``loop_handle``: as the kettle side handles of :mod:`artipg.templates.cookware`:
   origin on the vessel axis at z = 0, joining the wall at (``r_top``, ``z_top``) and
   (``r_bot``, ``z_bot``) on the +x side;
+- plug lids (``PLUG_LIDS``): origin at the centre of the rim plane, a disc on the rim
+  and a plug ring inside the wall; anchors as :mod:`artipg.templates.lids` lids;
 - ``stein_lid``: origin at the centre of the rim plane, lying on the rim; its hinge
   knuckle is on the axis (``hinge`` anchor) beyond the rim at +x, along y;
 - ``travel_lid``: origin at the centre of the rim plane; the drink opening is at the
@@ -29,6 +31,7 @@ from artipg.model.part import Deferred, Grasp, Part, Region
 _LOOP = rot_x(math.pi / 2) @ rot_z(-math.pi / 2)  # torus x-y plane -> x-z plane, arc from -z round +x
 _ALONG_Y = Placer(rot_x(-math.pi / 2))  # local z -> +y
 _UP = np.array([0.0, 0.0, 1.0])
+CLEAR = 0.0008  # radial clearance of a plug inside a wall
 
 
 def wall_radius(body: Part, z: float) -> float:
@@ -170,3 +173,51 @@ def flip_cover(p, length: float, width: float) -> Part:
              cuboid_between((-length - 0.004, -0.25 * width, -t), (-length, 0.25 * width, -t + 0.0015), role="tab")]
     return Part("flap", "flip_cover", prims, anchors={"thickness": (t, 0.0, 0.0)},
                 regions={"lift": Region(("tab", "flap")), "push": Region(("flap",))}, actionable="hinge_lid")
+
+
+def _plug_lid(template, p, outer: float, inner: float, extra) -> Part:
+    """A disc over the rim with a plug ring inside the wall (origin at the rim plane's
+    centre; hinge anchor at the disc's bottom back edge, +x, as :mod:`lids` lids)."""
+    R = outer + p.uniform("overhang", 0.001, 0.003)
+    t = p.uniform("thickness", 0.003, 0.005)
+    d = p.uniform("plug", 0.004, 0.008)
+    rp = inner - CLEAR
+    prims = [cylinder(R, t, translation(0, 0, t / 2), role="disc"),
+             ring(rp, rp - 0.0015, d, pose=translation(0, 0, -d / 2), role="plug"), *extra(R, t)]
+    edge = np.array([[-R - 1e-3, -0.4 * R, -1e-3], [-R + 0.02, 0.4 * R, t + 1e-3]])
+    return Part("lid", template, prims, anchors={"top": (0.0, 0.0, t), "hinge": (R, 0.0, 0.0), "front": (-R, 0.0, 0.0)},
+                regions={"lift": Region(("disc", "knob")), "grasp": Region(("disc",), edge)},
+                grasps=Deferred.one(_edge_grasp, R, t))
+
+
+def _edge_grasp(R: float, t: float) -> Grasp:
+    """A pinch on the lid's front edge, approaching +x, jaws closing along z."""
+    T = np.array([[0.0, 1.0, 0.0, -R + 0.008], [0.0, 0.0, 1.0, 0.0], [1.0, 0.0, 0.0, t / 2], [0.0, 0.0, 0.0, 1.0]])
+    return Grasp(T, t + 0.02, _UP)
+
+
+def plug_lid(p, outer: float, inner: float) -> Part:
+    """Flat ceramic lid with a plug inside the rim."""
+    return _plug_lid("plug_lid", p, outer, inner, lambda R, t: [])
+
+
+def knob_plug_lid(p, outer: float, inner: float) -> Part:
+    """Plug lid with a small round knob in the middle."""
+    rk, hk = p.uniform("knob_radius", 0.005, 0.008), p.uniform("knob_height", 0.006, 0.01)
+    return _plug_lid("knob_plug_lid", p, outer, inner,
+                     lambda R, t: [cylinder(0.6 * rk, hk, translation(0, 0, t + hk / 2), role="knob"),
+                                   sphere(rk, 0.0, rk, translation(0, 0, t + hk - 0.001), role="knob")])
+
+
+def dome_plug_lid(p, outer: float, inner: float) -> Part:
+    """Plug lid with a low spherical dome."""
+    f = p.uniform("dome", 0.15, 0.3)
+
+    def dome(R, t):
+        a, hd = 0.85 * R, f * R
+        rs = (a * a + hd * hd) / (2 * hd)
+        return [sphere(rs, rs - hd, rs, translation(0, 0, t + hd - rs), role="disc")]
+    return _plug_lid("dome_plug_lid", p, outer, inner, dome)
+
+
+PLUG_LIDS = {plug_lid: 2.0, knob_plug_lid: 2.0, dome_plug_lid: 1.0}
