@@ -20,19 +20,21 @@ from __future__ import annotations
 
 import math
 
-from artipg.geometry.transforms import rot_x, rot_z, translation
+from artipg.geometry.transforms import rot_x, translation
 from artipg.rules import Category, Slot
 from artipg.templates.pens import (BARRELS, CLEAR, CLIPS, end_plug, pen_cap, plunger, refill_point, roll_angle,
-                                   twist_section)
+                                   rolled, twist_section)
 
 FLIP = rot_x(math.pi)  # a clip built back-to-front (on a cap, rooted at its closed end)
+LAY = rot_x(-math.pi / 2)  # the pen's axis (z) along +y
 # sub-category -> barrel radius, length
 SUBS = {"click_pen": ((0.004, 0.0058), (0.13, 0.15)), "capped_pen": ((0.0038, 0.005), (0.125, 0.15)),
         "twist_pen": ((0.0042, 0.0055), (0.125, 0.145))}
 
 
 def body(ctx):
-    """Every part is made first, then placed: how the pen lies (``lay``) depends on the
+    """Every part is made first, then placed: how far the clip is turned about the
+    pen's axis (so that it and the barrel or cap both touch the floor) depends on the
     clip, which sits on the barrel, the twist section or the cap."""
     p, b = ctx.p, ctx.builder
     rr, lr = SUBS[ctx.sub]
@@ -64,20 +66,21 @@ def body(ctx):
         z1 = -cap.anchors["outer"][2]  # the cap's closed end, in the flipped clip frame
         clip_on, frame, z0 = "moving", FLIP, z1 - min(lc, lcap - 0.004)
     c = ctx.choose("clip", CLIPS)(p.scope("clip"), r, z0, z1)
-    # along +y, rolled so that the clip (local +x) points down and to the front (-x)
-    lay = rot_x(-math.pi / 2) @ rot_z(math.pi / 2 + roll_angle(c, r))
+    # along +y; the clip turned about the axis to point down and to the front (-x)
+    turn = math.pi / 2 + roll_angle(c, r)
+    rolled(c, -turn if frame is FLIP else turn)
     for part in root.link.parts:
-        part.pose = lay @ part.pose
-    root.add(barrel, lay)
+        part.pose = LAY @ part.pose
+    root.add(barrel, LAY)
     name, kind, origin, axis, hi, part = moving
     link = b.create_link(name, root)
-    link.set_joint(kind, lay @ origin, axis=axis, limits=(0.0, hi))
+    link.set_joint(kind, LAY @ origin, axis=axis, limits=(0.0, hi))
     link.add(part)
-    (link if clip_on else root).add(c, frame if clip_on else lay)
+    (link if clip_on else root).add(c, frame if clip_on else LAY)
     if ctx.sub != "capped_pen":  # the refill point in the nose
         bore, depth, _ = barrel.anchors["nose"]
         tip = b.create_link("refill", root)
-        tip.set_joint("prismatic", lay, axis=(0.0, 0.0, -1.0), limits=(0.0, p.uniform("point_travel", 0.001, 0.0015)))
+        tip.set_joint("prismatic", LAY, axis=(0.0, 0.0, -1.0), limits=(0.0, p.uniform("point_travel", 0.001, 0.0015)))
         tip.add(refill_point(p.scope("refill"), bore, depth))
 
 

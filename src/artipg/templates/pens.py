@@ -18,6 +18,8 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
+
 from artipg.geometry import cuboid_between, cylinder, frustum, ring, sphere
 from artipg.geometry.transforms import translation
 from artipg.model.part import Part, Region
@@ -113,6 +115,25 @@ def roll_angle(clip: Part, radius: float) -> float:
     bar = math.atan2(h, a1) + math.acos(min(1.0, radius / math.hypot(a1, h)))
     ball = math.acos(min(1.0, (radius - rb) / d))
     return max(bar, ball)
+
+
+def rolled(clip: Part, angle: float) -> Part:
+    """``clip`` turned by ``angle`` (radians) about the pen's axis (z). Its round
+    primitives (the ball, a wire rod along z) are only moved, not turned: the object's
+    bounds of a turned sphere or cylinder are its turned bounding box, lower than the
+    solid, and a pen is placed on the floor by its bounds."""
+    c, s = math.cos(angle), math.sin(angle)
+    R = np.array([[c, -s, 0.0, 0.0], [s, c, 0.0, 0.0], [0.0, 0.0, 1.0, 0.0], [0.0, 0.0, 0.0, 1.0]])
+    prims = []
+    for q in clip.primitives:
+        if q.geom.name == "cuboid":
+            prims.append(q.placed(R))
+        else:
+            T = q.pose.copy()
+            T[:3, 3] = R[:3, :3] @ q.pose[:3, 3]
+            prims.append(q._replace(pose=T))
+    clip.primitives = prims
+    return clip
 
 
 def plunger(p, radius: float, inside: float, out: float) -> Part:
