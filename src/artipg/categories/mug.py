@@ -21,16 +21,12 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
-
-from artipg.geometry import cuboid_between
 from artipg.geometry.transforms import rot_z, translation
-from artipg.model.part import Part
 from artipg.rules import Category, Slot
 from artipg.templates.cookware import block_c_handle, c_handle
 from artipg.templates.lids import mount_lid
-from artipg.templates.mugs import (BODIES, PLUG_LIDS, conical_body, flip_cover, loop_handle, slide_cover, slide_rails,
-                                   stein_lid, straight_body, travel_lid, wall_radius)
+from artipg.templates.mugs import (BODIES, PLUG_LIDS, conical_body, flip_cover, lever_stop, loop_handle, slide_cover,
+                                   slide_rails, stein_bracket, stein_lid, straight_body, travel_lid, wall_radius)
 
 TURN = rot_z(math.pi / 2)  # built with the handle at +x; turned so the front view (-x) shows the profile
 HANDLES = {loop_handle: 2.0, c_handle: 1.5, block_c_handle: 1.0}
@@ -83,39 +79,14 @@ def _stein(ctx, root, part, handle, H, lip, rim):
     hx = max(R + 0.0045 + p.uniform("hinge_gap", 0.006, 0.01), handle.anchors["top"][0])
     beta = p.uniform("lever_lean", 0.2, 0.5)
     lp = stein_lid(p.scope("lid"), lip, hx, p.uniform("thumb", 0.015, 0.03), beta)
-    rk, kl, _ = lp.anchors["knuckle"]
-    _, _, zk = lp.anchors["hinge"]
-    # a block from the wall over the handle's top, just under the rim plane, and two
-    # cheeks on it either side of the knuckle
-    top, yc = handle.anchors["top"][2], kl / 2 + 0.0008 + p.uniform("cheek", 0.002, 0.003)
-    zb = H + zk - rk - 0.0012  # the bracket's top, clear of the knuckle
-    prims = [cuboid_between((wall_radius(part, H) - 0.002, -yc, min(top, zb - 0.005) - 0.002), (hx + rk, yc, zb),
-                            role="bracket"),
-             *[cuboid_between((hx - rk, lo, zb - 0.0005), (hx + rk, hi, H + zk + 0.5 * rk), role="cheek")
-               for lo, hi in ((-yc, -kl / 2 - 0.0008), (kl / 2 + 0.0008, yc))]]
-    root.add(Part("hinge", "stein_cheeks", [c.placed(TURN) for c in prims]))
-    # the thumb lever swings back and down towards the bracket and the handle
-    L, lt = lp.primitives[3].params[2], lp.primitives[3].params[0]
-    stop = _lever_stop(L, beta, lt / 2, rk, rk + 0.0012, H + zk - top)
+    zk = lp.anchors["hinge"][2]
+    bracket = stein_bracket(p.scope("bracket"), lp, wall_radius(part, H), handle.anchors["top"][2] - H)
+    root.add(bracket, rim)
+    stop = lever_stop(lp, beta, bracket.anchors["top"][2], H + zk - handle.anchors["top"][2])
     link = ctx.builder.create_link("lid", root)
     link.set_joint("revolute", rim @ translation(hx, 0, zk), axis=(0.0, 1.0, 0.0),
                    limits=(0.0, max(0.5, min(p.uniform("open", 1.4, 1.9), stop))))
     link.add(lp, translation(-hx, 0, -zk))
-
-
-def _lever_stop(L, beta, half, x_b, floor_b, floor_h):
-    """Largest opening (radians) before a lever ``L`` long and ``2 half`` thick, rising
-    from the hinge axis and leaning back by ``beta``, comes within 1.5 mm of a bracket
-    top ``floor_b`` below the axis (for x <= ``x_b`` behind it) or of the handle's top
-    ``floor_h`` below it."""
-    th = np.linspace(0.0, math.pi, 181)
-    phi = beta + th
-    c, sn = np.cos(phi), np.maximum(np.sin(phi), 1e-9)
-    low = -half * sn  # the lever's lower face dips by half its thickness
-    ok = ((np.minimum(0.0, np.minimum(L, x_b / sn) * c) + low > 0.0015 - floor_b)
-          & (L * c + low > 0.0015 - floor_h))
-    bad = np.flatnonzero(~ok)
-    return float(th[max(bad[0] - 1, 0)]) if len(bad) else math.pi
 
 
 def _travel(ctx, root, lip, rim):

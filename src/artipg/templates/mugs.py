@@ -125,6 +125,39 @@ def stein_lid(p, radius: float, hinge_x: float, thumb: float, tilt: float) -> Pa
                 actionable="hinge_lid")
 
 
+def stein_bracket(p, lid: Part, wall: float, handle_top: float) -> Part:
+    """Hinge bracket for a :func:`stein_lid` (rim-plane frame): a block from the wall
+    (outer radius ``wall``) over the handle's top (``handle_top``, below the rim) up to
+    just under the knuckle, and two cheeks on it either side of the knuckle. Anchor
+    ``top``: the block's top (z)."""
+    rk, kl, _ = lid.anchors["knuckle"]
+    hx, _, zk = lid.anchors["hinge"]
+    yc = kl / 2 + 0.0008 + p.uniform("cheek", 0.002, 0.003)
+    zb = zk - rk - 0.0012  # clear of the knuckle
+    prims = [cuboid_between((wall - 0.002, -yc, min(handle_top, zb - 0.005) - 0.002), (hx + rk, yc, zb), role="bracket"),
+             *[cuboid_between((hx - rk, lo, zb - 0.0005), (hx + rk, hi, zk + 0.5 * rk), role="cheek")
+               for lo, hi in ((-yc, -kl / 2 - 0.0008), (kl / 2 + 0.0008, yc))]]
+    return Part("hinge", "stein_bracket", prims, anchors={"top": (0.0, 0.0, zb)})
+
+
+def lever_stop(lid: Part, beta: float, bracket_top: float, handle_drop: float) -> float:
+    """Largest opening (radians) of a :func:`stein_lid` before its thumb lever, leaning
+    back by ``beta``, comes within 1.5 mm of the bracket's top (for x <= the knuckle's
+    radius behind the axis) or of the handle's top, ``handle_drop`` below the axis."""
+    rk = lid.anchors["knuckle"][0]
+    zk = lid.anchors["hinge"][2]
+    lt, _, L = lid.primitives[3].params
+    floor_b = zk - bracket_top
+    th = np.linspace(0.0, math.pi, 181)
+    phi = beta + th
+    c, sn = np.cos(phi), np.maximum(np.sin(phi), 1e-9)
+    low = -lt / 2 * sn  # the lever's lower face dips by half its thickness
+    ok = ((np.minimum(0.0, np.minimum(L, rk / sn) * c) + low > 0.0015 - floor_b)
+          & (L * c + low > 0.0015 - handle_drop))
+    bad = np.flatnonzero(~ok)
+    return float(th[max(bad[0] - 1, 0)]) if len(bad) else math.pi
+
+
 def _lean(a: float) -> np.ndarray:
     """Rotation about y by ``a``: +z leans towards +x."""
     c, s = math.cos(a), math.sin(a)
