@@ -47,7 +47,8 @@ def body(ctx):
     root.add(part, TURN)
     lp = None
     if ctx.sub == "lidded_mug":  # chosen here: the handle stays below the lid's skirt
-        inner = part.anchors["radii"][1] - part.anchors["wall"][0]
+        # the wall's inner radius 10 mm under the rim (the plug's reach): a conical wall narrows downwards
+        inner = wall_radius(part, H - 0.01) - part.anchors["wall"][0]
         lp = ctx.choose("lid", PLUG_LIDS)(p.scope("lid"), part.anchors["lip"][0], inner)
     if not p.flag("handle", p_handle):
         return root, part, None, lp
