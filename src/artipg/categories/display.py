@@ -3,7 +3,7 @@
 Parts: a stand base (rectangular plate, round disc or V of two splayed feet); a neck
 (box, round post, or box with a cable opening); a tilt hinge (barrel, arm and round
 mounting plate) and the screen (panel with a back housing and a display face, with an
-even bezel, a chin, or a raised TV-style frame). Height-adjustable monitors add a
+even bezel, a chin, or a raised TV-style frame) with a control button under its edge. Height-adjustable monitors add a
 carriage sliding on the front of a taller column.
 Joints: swivel revolute about the vertical axis of the neck (+-20-45 deg, on a small
 turntable); height prismatic along z (ergonomic monitors, 100-150 mm travel; rest is
@@ -25,8 +25,8 @@ import math
 
 from artipg.geometry.transforms import translation
 from artipg.rules import Category, Slot
-from artipg.templates.displays import (BASES, NECKS, SCREENS, box_neck, height_carriage, slot_neck, tilt_hinge,
-                                       turntable)
+from artipg.templates.displays import (BASES, NECKS, SCREENS, box_neck, control_button, height_carriage, slot_neck,
+                                       tilt_hinge, turntable)
 
 COLUMNS = {box_neck: 2.0, slot_neck: 1.0}  # a carriage needs a flat front face
 MONITOR_ASPECTS, TV_ASPECTS = {16 / 9: 3.0, 16 / 10: 1.0, 21 / 9: 1.0}, {16 / 9: 1.0}
@@ -106,14 +106,14 @@ def screen(ctx):
         tilt = ctx.builder.create_link("hinge", link)
         tilt.set_joint("revolute", at, axis=(0.0, 1.0, 0.0), limits=(-max(fwd, 0.0), back))
         link, at = tilt, translation(0, 0, 0)
-    link.add(hinge, at)
     mount = at @ translation(*hinge.anchors["mount"])
+    link.add(hinge, at)
     if pivot:
         turn = ctx.builder.create_link("screen", link)
         turn.set_joint("revolute", mount, axis=(1.0, 0.0, 0.0), limits=(0.0, math.pi / 2))
-        turn.add(scr)
-    else:
-        link.add(scr, mount)
+        link, mount = turn, translation(0, 0, 0)
+    link.add(scr, mount)
+    link.add(control_button(p.scope("button"), scr), mount)
 
 
 RULE = Category(

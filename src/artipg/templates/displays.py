@@ -11,7 +11,9 @@ Frames (metres, +z up, front towards -x):
   forward to a round mounting plate whose front face (anchor ``mount``) carries the
   screen;
 - screens: origin at the centre of the back face (the mounting point), the panel
-  extends towards -x, width along y, height along z; anchor ``front``.
+  extends towards -x, width along y, height along z; anchors ``front``, ``bottom``
+  (the panel's x range and its bottom edge's z) and ``width``; ``control_button``
+  hangs under the bottom edge, in the screen's frame.
 """
 
 from __future__ import annotations
@@ -137,7 +139,8 @@ def _screen(template, p, width, height, face_lo, face_hi, extra=()) -> Part:
              cuboid_between((x0 - 0.0008, face_lo[0], face_lo[1]), (x0, face_hi[0], face_hi[1]), role="display"),
              *extra]
     face = np.array([[x0 - 0.001, face_lo[0], face_lo[1]], [x0 + 1e-4, face_hi[0], face_hi[1]]])
-    return Part("screen", template, prims, anchors={"front": (x0 - 0.0008, 0.0, 0.0)},
+    return Part("screen", template, prims, anchors={"front": (x0 - 0.0008, 0.0, 0.0), "bottom": (x0, -hd, -height / 2),
+                                                    "width": (width, 0.0, 0.0)},
                 regions={"push": Region(("display",), face), "grasp": Region(("panel",))})
 
 
@@ -167,3 +170,16 @@ def framed_screen(p, width: float, height: float) -> Part:
 
 
 SCREENS = {bezel_screen: 2.0, chin_screen: 1.0, framed_screen: 1.0}
+
+
+def control_button(p, screen: Part) -> Part:
+    """Menu / power button under the screen's bottom edge, towards one side (in the
+    screen's frame)."""
+    x0, x1, zb = screen.anchors["bottom"]
+    w = screen.anchors["width"][0]
+    y = p.uniform("offset", 0.0, 0.4) * w
+    s = p.uniform("size", 0.006, 0.012)
+    d = min(s, x1 - x0)
+    return Part("button", "control_button",
+                [cuboid_between(((x0 + x1 - d) / 2, y - s / 2, zb - 0.003), ((x0 + x1 + d) / 2, y + s / 2, zb), role="cap")],
+                regions={"press": Region(("cap",))})
