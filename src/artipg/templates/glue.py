@@ -12,7 +12,7 @@ Frames (metres, +z up, on the stick's axis):
 
 from __future__ import annotations
 
-from artipg.geometry import cylinder, prism, ring, sphere
+from artipg.geometry import cylinder, frustum, prism, ring, sphere
 from artipg.geometry.transforms import translation
 from artipg.model.part import Part, Region
 
@@ -87,11 +87,10 @@ TUBES = {plain_tube: 2.0, label_tube: 1.5, collar_tube: 1.0}
 
 
 def glue_column(p, radius: float, length: float) -> Part:
-    """The glue: a round column (origin at its bottom), rounded off at the top."""
+    """The glue: a round column (origin at its bottom), worn to a low cone at the top."""
     d = p.uniform("dome", 0.1, 0.3) * radius
-    rs = (radius * radius + d * d) / (2 * d)
     prims = [cylinder(radius, length - d, _z(0.0, length - d), role="glue"),
-             sphere(rs, rs - d, rs, translation(0, 0, length - rs), role="glue")]
+             frustum(radius, p.uniform("crown", 0.3, 0.6) * radius, d, _z(length - d, length), role="glue")]
     return Part("refill", "glue_column", prims, regions={"push": Region(("glue",))})
 
 
