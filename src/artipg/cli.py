@@ -16,6 +16,7 @@ COMMAND_MODULES = (
     "artipg.commands.eval",
     "artipg.commands.render",
     "artipg.commands.validate",
+    "artipg.commands.fit",
 )
 
 app = typer.Typer(add_completion=False, no_args_is_help=True, pretty_exceptions_enable=False,
