@@ -81,6 +81,7 @@ def main() -> None:
             print(f"{cat} {f.name}: link {rows[-1]['link_median']:.4f} whole {rows[-1]['whole_closed']:.4f} "
                   f"{'pass' if r.passed else 'FAIL'} {rows[-1]['seconds']:.1f} s {r.obj.subcategory}", flush=True)
         prior = prior_proportions(cat, args.prior_seeds)
+        lo, hi = prior[:, 0].min(), prior[:, 0].max()
         edges = Counter(e for row in rows for e in row["edges"])
         summary[cat] = {
             "objects": len(rows),
@@ -95,11 +96,11 @@ def main() -> None:
             "real_height_width": _q([r["target"]["height_width"] for r in rows]),
             "real_depth_width": _q([r["target"]["depth_width"] for r in rows]),
             "ours_height_width": _q(prior[:, 0]), "ours_depth_width": _q(prior[:, 1]),
-            "real_in_ours_hw": float(np.mean([(prior[:, 0].min() <= r["target"]["height_width"] <= prior[:, 0].max())
-                                              for r in rows])),
+            "real_in_ours_hw": float(np.mean([lo <= r["target"]["height_width"] <= hi for r in rows])),
             "edges": {f"{n} ({s})": k for (n, s), k in edges.most_common()},
         }
-    print("\n| category | objects | median per-link CD | area-weighted | whole CD | pass | links matched | s / object |")
+    print("\n| category | objects | median per-link CD | area-weighted | whole CD | pass | links matched "
+          "| s / object |")
     print("|---|---|---|---|---|---|---|---|")
     for cat, s in summary.items():
         print(f"| {cat} | {s['objects']} | {s['link_chamfer_median']:.3f} | {s['link_chamfer_weighted_median']:.3f} | "

@@ -106,8 +106,11 @@ def restarts(ev: Evaluator, budget: FitBudget) -> list[Candidate]:
     return sorted(out, key=lambda c: c.total)
 
 
+_TUNABLE = ("uniform", "integer", "choice", "flag")
+
+
 def _tunable(obj) -> list[str]:
-    return [n for n, p in obj.params.items() if n != "subcategory" and p.kind in ("uniform", "integer", "choice", "flag")]
+    return [n for n, p in obj.params.items() if n != "subcategory" and p.kind in _TUNABLE]
 
 
 def _move(p, rng: np.random.Generator, heat: float):
