@@ -4,10 +4,15 @@ folder on disk (PartNet-Mobility's or artipg's).
 
 Pose convention. Both sides are compared at joint-state fractions ``t`` in
 :data:`STATES`: ``t = 0`` closed, ``t = 1`` open, every limited joint moved together
-(continuous joints stay at 0). Ours are closed at 0 and open at the limit farther from
-0 (DESIGN.md). PartNet-Mobility's 0 is the modelled pose (laptops open), so a real
-joint's closed end is found by its geometry: the limit at which the object's bounding
-box is smaller (the end nearer 0 on a tie, e.g. a button).
+(continuous joints stay at 0). "Closed" is decided by geometry, the same way on both
+sides: of a joint's two ends (the others joints at 0), the one at which the object is
+more compact, i.e. the mean squared distance of its surface points from their centroid
+at q = 0 is smaller (the end nearer 0 on a tie within 0.1 %, e.g. a knob). A real
+joint's ends are its limits (PartNet-Mobility's 0 is the modelled pose: laptops open,
+so closed is a limit); ours are 0 and the limit farther from it (DESIGN.md: 0 is the
+rest pose), and 0 is not always the compact end (eyeglasses rest unfolded, and are
+compared folded). A whole-object bounding box would not do: folding one temple of a
+pair leaves the box as it is.
 
 Frames. Clouds are in the object frame (+Z up, front -X) at the closed state,
 centred on the closed cloud's bounding-box centre and divided by its diagonal, and the
@@ -109,14 +114,42 @@ def _assemble(clouds, link, names, labels, raw, jtype, axis, travel_raw, link_cl
 
 
 # ------------------------------------------------------------------ generated objects
-def open_values(obj) -> dict[str, float]:
-    """Open value of every limited joint of ``obj``: the limit farther from 0."""
+def _compact_end(spread_a: float, spread_b: float) -> int | None:
+    """0 or 1: which of two spreads is smaller; None on a tie (within 0.1 %)."""
+    if abs(spread_a - spread_b) <= 1e-3 * max(spread_a, spread_b):
+        return None
+    return 0 if spread_a < spread_b else 1
+
+
+def _spread(points: np.ndarray, centre: np.ndarray) -> float:
+    """Mean squared distance (units^2) of ``points`` (N, 3) from ``centre`` (3,)."""
+    return float(np.mean(np.sum((points - centre) ** 2, axis=1)))
+
+
+def joint_ends(obj, points: np.ndarray, point_link: np.ndarray) -> dict[str, tuple[float, float]]:
+    """(closed, open) value of every limited joint of ``obj`` (module docstring): of 0 and
+    the limit farther from 0, the more compact end is closed.
+
+    ``points`` (N, 3) are surface points of ``obj`` at q = 0 and ``point_link`` (N,)
+    their links (indices into ``obj.links``).
+    """
     out = {}
+    centre = points.mean(axis=0)
+    at0 = _spread(points, centre)
+    inv0 = np.linalg.inv(obj.link_poses())
     for j in obj.movable_joints:
         if j.type in LIMITED:
             lo, hi = j.limits
-            out[j.name] = float(hi if abs(hi) >= abs(lo) else lo)
+            far = float(hi if abs(hi) >= abs(lo) else lo)
+            moved = _moved(points, point_link, obj.link_poses({j.name: far}) @ inv0)
+            out[j.name] = (far, 0.0) if _compact_end(at0, _spread(moved, centre)) == 1 else (0.0, far)
     return out
+
+
+def _state(ends: dict, t: float) -> dict | None:
+    """Joint values at fraction ``t`` from closed to open (None: every joint at 0)."""
+    q = {k: c + t * (o - c) for k, (c, o) in ends.items()}
+    return q if any(q.values()) else None
 
 
 def link_label(obj, i: int) -> tuple[str, str]:
@@ -142,16 +175,17 @@ def object_shape(obj, n: int = 2048, seed: int = 0, per_link: int = 0) -> Shape:
         0: link clouds are the whole clouds split by link (fast, for the search);
         > 0: each link sampled on its own with this many points (for the report).
     """
-    opened = open_values(obj)
+    rest = obj.sample_points(n, seed=seed)
+    ends = joint_ends(obj, rest.points, rest.link)
     clouds, link = [], None
     for t in STATES:
-        pc = obj.sample_points(n, seed=seed, qpos={k: t * v for k, v in opened.items()} if t else None)
+        pc = obj.sample_points(n, seed=seed, qpos=_state(ends, t))
         clouds.append(pc.points)
         link = pc.link if link is None else link
     used = np.unique(link)
     remap = np.full(len(obj.links), -1)
     remap[used] = np.arange(len(used))
-    poses = obj.link_poses()
+    poses = obj.link_poses(_state(ends, 0.0))
     names, labels, raw, jtype, axis, travel = [], [], [], [], [], []
     for i in used:
         lk = obj.links[i]
@@ -163,13 +197,13 @@ def object_shape(obj, n: int = 2048, seed: int = 0, per_link: int = 0) -> Shape:
         moving = j is not None and j.type != "fixed"
         jtype.append(j.type if moving else "fixed")
         axis.append(poses[i][:3, :3] @ j.axis if moving else np.zeros(3))
-        travel.append(abs(opened.get(j.name, 0.0)) if moving else 0.0)
+        c, o = ends.get(j.name, (0.0, 0.0)) if moving else (0.0, 0.0)
+        travel.append(abs(o - c))
     link_clouds = None
     if per_link > 0:
         link_clouds = []
         for t in STATES:
-            q = {k: t * v for k, v in opened.items()} if t else None
-            link_clouds.append([obj.sample_points(per_link, seed=seed, qpos=q,
+            link_clouds.append([obj.sample_points(per_link, seed=seed, qpos=_state(ends, t),
                                                   parts=np.flatnonzero(obj.part_link == i)).points for i in used])
     return _assemble(np.stack(clouds), remap[link], names, labels, raw, jtype, axis, travel, link_clouds)
 
@@ -241,18 +275,19 @@ def folder_shape(folder: str | Path, n: int = 2048, seed: int = 0, per_link: int
         return T @ inv0
 
     closed, opened = np.zeros(len(act)), np.zeros(len(act))
+    centre = pts.mean(axis=0)
     for k, jn in enumerate(act):  # each limited joint's closed end: the smaller box
         j = urdf.joint_map[jn]
         if j.type not in LIMITED or j.limit is None or j.limit.lower is None or j.limit.upper is None:
             continue
         ends = (float(j.limit.lower), float(j.limit.upper))
-        vol = []
+        spread = []
         for e in ends:
             cfg = np.zeros(len(act))
             cfg[k] = e
-            vol.append(float(np.prod(np.ptp(_moved(pts, plink, rel(cfg)), axis=0))))
-        tie = abs(vol[0] - vol[1]) <= 1e-3 * max(vol)
-        c = int(np.argmin(np.abs(ends))) if tie else int(np.argmin(vol))
+            spread.append(_spread(_moved(pts, plink, rel(cfg)), centre))
+        c = _compact_end(*spread)
+        c = int(np.argmin(np.abs(ends))) if c is None else c
         closed[k], opened[k] = ends[c], ends[1 - c]
 
     rels = [rel(closed + t * (opened - closed)) for t in STATES]
