@@ -29,7 +29,7 @@ from artipg.metrics.chamfer import chamfer_distance
 
 LINK_WEIGHT = 0.5
 JOINT_WEIGHT = 0.03
-UNMATCHED = 0.25
+UNMATCHED = 0.5
 _FORBIDDEN = 1e6
 
 

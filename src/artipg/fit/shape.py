@@ -29,6 +29,8 @@ import numpy as np
 
 from artipg.fit.labels import BODY
 
+#: semantics.txt motions of links that no joint moves.
+BODY_MOTIONS = ("static", "free", "heavy")
 #: Joint-state fractions compared: closed, half open, open.
 STATES = (0.0, 0.5, 1.0)
 LIMITED = ("revolute", "prismatic")
@@ -274,11 +276,23 @@ def folder_shape(folder: str | Path, n: int = 2048, seed: int = 0, per_link: int
                       for nm in names])
         return T @ inv0
 
+    sem = _semantics(folder)
+    child_joint = {j.child: j for j in urdf.robot.joints}
+
+    def is_body(name: str) -> bool:
+        """semantics.txt's motion decides (a few real URDFs hang the body on a
+        prismatic joint, or a hinged handle on a fixed one); else the joint does."""
+        if name in sem:
+            return sem[name][0] in BODY_MOTIONS
+        j = child_joint.get(name)
+        return j is None or j.type == "fixed"
+
     closed, opened = np.zeros(len(act)), np.zeros(len(act))
     centre = pts.mean(axis=0)
-    for k, jn in enumerate(act):  # each limited joint's closed end: the smaller box
+    for k, jn in enumerate(act):  # each limited joint's closed end: the more compact one
         j = urdf.joint_map[jn]
-        if j.type not in LIMITED or j.limit is None or j.limit.lower is None or j.limit.upper is None:
+        if (j.type not in LIMITED or j.limit is None or j.limit.lower is None or j.limit.upper is None
+                or is_body(j.child)):
             continue
         ends = (float(j.limit.lower), float(j.limit.upper))
         spread = []
@@ -296,17 +310,16 @@ def folder_shape(folder: str | Path, n: int = 2048, seed: int = 0, per_link: int
     remap[visual] = np.arange(len(visual))
     link_clouds = [[_moved(lpts[llink == li], llink[llink == li], r) for li in visual] for r in rels]
 
-    sem = _semantics(folder)
-    child_joint = {j.child: j for j in urdf.robot.joints}
     T0 = rels[0] @ loaded.link_poses  # link poses at the closed state
     labels, raw, jtype, axis, travel = [], [], [], [], []
     for li in visual:
         nm = names[li]
         j = child_joint.get(nm)
-        moving = j is not None and j.type != "fixed"
+        body = is_body(nm)
+        moving = not body and j is not None and j.type != "fixed"
         label = sem.get(nm, ("", BODY))[1]
         raw.append(label)
-        labels.append(label if moving else BODY)
+        labels.append(BODY if body else label)
         jtype.append(j.type if moving else "fixed")
         axis.append(T0[li][:3, :3] @ np.asarray(j.axis if j.axis is not None else (1.0, 0, 0), dtype=float)
                     if moving else np.zeros(3))
