@@ -94,7 +94,8 @@ class FitResult:
                 "twin": [{"link": w.names[j], "label": w.raw_labels[j], "area_share": _r(w.share[j])}
                          for j in s.unmatched_twin]},
             "target_inconsistent": [
-                {"link": t.names[i], "label": t.raw_labels[i], "issue": "semantics.txt says it moves; its joint is fixed"}
+                {"link": t.names[i], "label": t.raw_labels[i],
+                 "issue": "semantics.txt says it moves; its joint is fixed"}
                 for i in range(len(t.names)) if t.labels[i] != "body" and t.joint_type[i] == "fixed"],
             "movable_joints": {"target": sum(x != "fixed" for x in t.joint_type),
                                "twin": sum(x != "fixed" for x in w.joint_type)},
