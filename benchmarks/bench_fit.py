@@ -9,7 +9,7 @@ bounding-box-normalised), the same area-weighted, the whole-object Chamfer at th
 closed state, the share of twins that pass validation, the share of real links
 matched, the fit time per object; then the overall proportions (height / width,
 depth / width at the closed state) of the real objects against our generator's
-(``--prior-seeds`` seeds per category, unvalidated), and the fitted parameters that
+(``--prior-seeds`` seeds per category, unvalidated, at the same closed state), and the fitted parameters that
 press against an end of their range (:func:`artipg.fit.search.edge_pressure`).
 
 Only aggregate figures are printed or written; no clouds, no per-object geometry.
@@ -28,15 +28,17 @@ import artipg
 from artipg.fit import FitBudget, fit_object
 from artipg.fit.api import proportions
 from artipg.fit.labels import our_category
+from artipg.fit.shape import object_shape
 from artipg.io import find_object_folders
 
 
 def prior_proportions(category: str, seeds: int) -> np.ndarray:
-    """(seeds, 2) height/width, depth/width of our objects 0..seeds-1 at rest."""
+    """(seeds, 2) height/width, depth/width of our objects 0..seeds-1 at the closed
+    state the fit compares (:mod:`artipg.fit.shape`; eyeglasses folded), measured on
+    sampled points as the real objects are."""
     out = []
     for s in range(seeds):
-        b = artipg.generate(category, s).bounds()
-        p = proportions(b[1] - b[0])
+        p = proportions(object_shape(artipg.generate(category, s), 1024).extents)
         out.append((p["height_width"], p["depth_width"]))
     return np.array(out)
 
