@@ -144,6 +144,11 @@ def test_cli_bad_input_one_line(tmp_path, fitted):
     r = run_cli(tmp_path, "--category", "storage_furniture", "--out", tmp_path / "t")
     assert r.returncode != 0 and "Traceback" not in r.stderr
     assert len(r.stderr.strip().splitlines()) == 1 and "mobility.urdf" in r.stderr
+    (tmp_path / "broken").mkdir()
+    (tmp_path / "broken" / "mobility.urdf").write_text("<robot name='x'><link name=")
+    r = run_cli(tmp_path / "broken", "--category", "storage_furniture", "--out", tmp_path / "t")
+    assert r.returncode != 0 and "Traceback" not in r.stderr
+    assert len(r.stderr.strip().splitlines()) == 1 and "cannot read" in r.stderr
 
 
 def test_cli_writes_twin(tmp_path, fitted):

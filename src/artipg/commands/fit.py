@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import logging
 from pathlib import Path
 from typing import Optional
 
@@ -31,6 +32,8 @@ def register(app: typer.Typer) -> None:
         from artipg.fit.labels import our_category
         from artipg.io.folders import URDF_NAME, metadata_category
 
+        # the URDF parser logs its own messages on a malformed file: the error line says it
+        logging.getLogger("yourdfpy").setLevel(logging.CRITICAL)
         if min(restarts, refine) < 1 or iterations < 0:
             fail("--restarts and --refine must be >= 1, --iterations >= 0")
         if not (folder / URDF_NAME).is_file():

@@ -170,14 +170,19 @@ def fit_object(folder: str | Path, category: str, budget: FitBudget = FitBudget(
     FileNotFoundError
         No ``mobility.urdf`` in ``folder`` (or a mesh it names is missing).
     ValueError
-        A URDF without visual geometry.
+        A URDF without visual geometry, or one that cannot be parsed.
     """
     import artipg
 
     start = time.perf_counter()
     name = our_category(category)
     cat = artipg.get_category(name)
-    target = folder_shape(folder, budget.points, seed=seed, per_link=512)
+    try:
+        target = folder_shape(folder, budget.points, seed=seed, per_link=512)
+    except (FileNotFoundError, ValueError):
+        raise
+    except Exception as e:  # a malformed URDF or mesh: the parsers raise their own types
+        raise ValueError(f"{folder}: cannot read the object: {type(e).__name__}: {e}") from e
     pool, ev = search(cat, target, budget)
     best = pool[0]
     obj = None
