@@ -68,7 +68,12 @@ def test_part_pose_size_match_geometry(category):
         # along any axis by more than the curvature of round primitives allows
         assert np.all(np.abs(local) <= F.size[i] / 2 + 1e-9)
         span = local.max(axis=0) - local.min(axis=0)
-        assert np.all(span >= 0.5 * F.size[i] - 1e-6), (part.name, span, F.size[i])
+        # (a partial ring or torus turned off its axes has a box loose beyond that: its
+        # arc's box, itself turned, is the bound)
+        partial = any(pr.geom.name in ("ring", "torus") and pr.params[2 + (pr.geom.name == "ring")] < 2 * np.pi - 1e-9
+                      for pr in part.primitives)
+        if not partial:
+            assert np.all(span >= 0.5 * F.size[i] - 1e-6), (part.name, span, F.size[i])
         np.testing.assert_allclose(F.size[i], part.canonical_size(), rtol=1e-9, atol=1e-12)
 
 

@@ -26,7 +26,7 @@ from artipg.geometry import cuboid, cuboid_between, cylinder, frustum, rect_ring
 from artipg.geometry.transforms import rot_x, rot_y, translation
 from artipg.model.part import Part
 from artipg.rules import Category, Slot
-from artipg.validate import check_object, generate_valid, sim
+from artipg.validate import check_object, generate_valid, sim, sim_common, sim_mujoco, sim_pybullet
 from artipg.validate.folder import validate_folder
 from conftest import CATEGORIES
 
@@ -118,11 +118,11 @@ def test_folders_keep_the_mounting_policy(tmp_path):
 
 def test_eroded_hulls_move_every_face_in_by_the_margin():
     box = np.array([[x, y, z] for x in (0, 0.02) for y in (0, 0.01) for z in (0, 0.005)])
-    V, F, e = sim.eroded_hull(box, 1e-3)
+    V, F, e = sim_pybullet.eroded_hull(box, 1e-3)
     assert e == 1e-3 and F.shape[1] == 3
     assert np.allclose(V.min(axis=0), [0.001] * 3) and np.allclose(V.max(axis=0), [0.019, 0.009, 0.004])
     plate = box * [1.0, 1.0, 0.3]  # 1.5 mm thick: eroded to a sliver, not to nothing
-    V, F, e = sim.eroded_hull(plate, 1e-3)
+    V, F, e = sim_pybullet.eroded_hull(plate, 1e-3)
     assert e == pytest.approx(0.0007) and np.ptp(V[:, 2]) == pytest.approx(1e-4)
 
 
@@ -130,7 +130,7 @@ def test_pybullet_sees_touching_meshes_touch(tmp_path):
     """pybullet pads each convex mesh by 1 mm: two touching mesh boxes read 2 mm deep,
     unless the meshes are eroded by that margin first (:func:`pybullet_urdf`)."""
     box = np.array([[x, y, z] for x in (-0.02, 0.02) for y in (-0.02, 0.02) for z in (0, 0.02)], dtype=float)
-    hull_faces = sim.eroded_hull(box, 0.0)[1]
+    hull_faces = sim_pybullet.eroded_hull(box, 0.0)[1]
     (tmp_path / "box.obj").write_text(obj_text(box, hull_faces))
     robot = ET.Element("robot", name="touch")
     for name in ("a", "b"):
@@ -148,20 +148,20 @@ def test_pybullet_sees_touching_meshes_touch(tmp_path):
     ET.SubElement(joint, "limit", lower="0", upper="0.1", effort="10", velocity="1")
     ET.ElementTree(robot).write(tmp_path / "touch.urdf")
 
-    pb = sim._import_pybullet()
+    pb = sim_pybullet._import_pybullet()
 
     def distance(urdf):
         cid = pb.connect(pb.DIRECT)
         try:
-            _, flags = sim.pybullet_configure(pb, cid)
+            _, flags = sim_pybullet.pybullet_configure(pb, cid)
             body = pb.loadURDF(str(urdf), useFixedBase=True, flags=flags, physicsClientId=cid)
             cps = pb.getClosestPoints(body, body, 0.005, linkIndexA=-1, linkIndexB=0, physicsClientId=cid)
             return min(c[8] for c in cps)
         finally:
             pb.disconnect(cid)
 
-    assert distance(tmp_path / "touch.urdf") == pytest.approx(-2 * sim.PYBULLET_MESH_MARGIN, abs=2e-4)
-    eroded, inflation = sim.pybullet_urdf(tmp_path / "touch.urdf", str(tmp_path / "eroded"))
+    assert distance(tmp_path / "touch.urdf") == pytest.approx(-2 * sim_pybullet.PYBULLET_MESH_MARGIN, abs=2e-4)
+    eroded, inflation = sim_pybullet.pybullet_urdf(tmp_path / "touch.urdf", str(tmp_path / "eroded"))
     assert abs(distance(eroded)) < 1e-4 and inflation == {"a": 0.0, "b": 0.0}
 
 
@@ -186,7 +186,7 @@ def test_a_lid_sliding_round_its_hinge_barrel_is_not_jammed_by_stale_contacts(mo
     obj = _rule("test_lid", _laptop_lid)
     only_pb = sim.SimOptions(engines=("pybullet",))
     assert sim.simulate_object(obj, only_pb).ok
-    monkeypatch.setattr(sim, "CONTACT_BREAKING", 0.02)  # pybullet's default
+    monkeypatch.setattr(sim_pybullet, "CONTACT_BREAKING", 0.02)  # pybullet's default
     r = sim.simulate_object(obj, only_pb)
     assert not r.ok and {i.joint for i in r.issues} == {"joint_lid_0"}
 
@@ -206,7 +206,7 @@ def test_a_knob_pressed_on_its_panel_along_its_axis_turns_in_mujoco(monkeypatch)
     obj = _rule("test_knob", _knob)
     only_mj = sim.SimOptions(engines=("mujoco",))
     assert sim.simulate_object(obj, only_mj).ok
-    monkeypatch.setattr(sim, "INVWEIGHT_FLOOR", 0.0)  # MuJoCo's own estimate: 0 for a knob
+    monkeypatch.setattr(sim_mujoco, "INVWEIGHT_FLOOR", 0.0)  # MuJoCo's own estimate: 0 for a knob
     r = sim.simulate_object(obj, only_mj)
     assert not r.ok and all(i.kind == "joint_blocked" and i.amount > 1.0 for i in r.issues)
 
@@ -231,13 +231,13 @@ def test_an_arm_riding_on_a_driven_hinge_follows_it_in_pybullet(tmp_path):
     """The axle's ends press on the cheeks along the hinge axis: a contact no joint can
     move, whose zero effective mass pybullet divides by unless regularised (globalCFM)."""
     urdf = _write(_rule("test_stapler", _stapler), tmp_path)
-    path, _ = sim.pybullet_urdf(urdf, str(tmp_path))
-    pb = sim._import_pybullet()
+    path, _ = sim_pybullet.pybullet_urdf(urdf, str(tmp_path))
+    pb = sim_pybullet._import_pybullet()
 
     def drive(cfm):
         cid = pb.connect(pb.DIRECT)
         try:
-            _, flags = sim.pybullet_configure(pb, cid)
+            _, flags = sim_pybullet.pybullet_configure(pb, cid)
             if cfm is not None:
                 pb.setPhysicsEngineParameter(globalCFM=cfm, physicsClientId=cid)
             pb.setGravity(0, 0, 0, physicsClientId=cid)
@@ -263,7 +263,7 @@ def test_an_arm_riding_on_a_driven_hinge_follows_it_in_pybullet(tmp_path):
 # ---------------------------------------------------------------- blocked joints
 
 def test_a_joint_is_blocked_only_if_it_misses_with_the_others_at_rest_and_open():
-    J = sim._Joint
+    J = sim_common.Joint
     door, rack, stuck = J("door", "revolute", 0.0, 1.5), J("rack", "prismatic", 0.0, 0.3), J("stuck", "revolute",
                                                                                              0.0, 1.0)
     calls = []
@@ -282,8 +282,8 @@ def test_a_joint_is_blocked_only_if_it_misses_with_the_others_at_rest_and_open()
         return out
 
     opts = sim.SimOptions()
-    blocked = sim._blocked(run, [door, rack, stuck], opts)
+    blocked = sim_common.blocked(run, [door, rack, stuck], opts)
     assert [(j.name, t, q) for j, t, q in blocked] == [("stuck", 1.0, 0.2)]
     assert calls == [(["door", "rack", "stuck"], False), (["rack"], False), (["rack"], True), (["stuck"], False),
                      (["stuck"], True)]
-    assert sim._blocked(run, [rack], opts)  # nothing to open: the rack alone is blocked
+    assert sim_common.blocked(run, [rack], opts)  # nothing to open: the rack alone is blocked

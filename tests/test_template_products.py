@@ -12,7 +12,7 @@ import math
 
 import numpy as np
 
-from artipg.geometry.transforms import IDENTITY, rot_x, rot_y, rot_z, rotation, shift_of, translated, translation
+from artipg.geometry.transforms import IDENTITY, rot_x, rot_y, rot_z, rotation, translated, translation
 from artipg.model.builder import ObjectBuilder
 from artipg.rules.params import ParamRecorder
 from artipg.templates import controls, mounting, racks
@@ -50,27 +50,8 @@ def _xyz(rng, T):
     return xyz
 
 
-def test_shift_of_tells_pure_translations():
-    assert shift_of(IDENTITY) == (0.0, 0.0, 0.0)
-    assert shift_of(translation(1.0, -2.0, 0.5)) == (1.0, -2.0, 0.5)
-    for bad in (rot_z(1e-9), translation(1, 2, 3) @ rot_x(math.pi), np.diag([1.0, 1.0, 1.0, 2.0])):
-        assert shift_of(bad) is None
-    T = translation(1, 2, 3)
-    T[3, 0] = 1e-300
-    assert shift_of(T) is None
 
 
-def test_translated_is_the_product_bit_for_bit():
-    rng = np.random.default_rng(11)
-    n_fast = 0
-    for T in _poses(rng):
-        n_fast += shift_of(T) is not None
-        for _ in range(15):
-            xyz = _xyz(rng, T)
-            got, ref = translated(T, *xyz), T @ translation(*xyz)
-            assert got.tobytes() == ref.tobytes(), (T, xyz, got, ref)
-            assert got.flags.writeable and got.dtype == np.float64
-    assert n_fast > 100  # both paths are exercised
 
 
 def test_handle_pose_is_the_plain_product():

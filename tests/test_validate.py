@@ -38,7 +38,6 @@ from artipg.templates.panels import box_drawer, slab_door
 from artipg.validate import check_object, generate_valid, replacement_seed
 from artipg.validate.blame import part_params
 from artipg.validate.contacts import box_box
-from artipg.validate.rowsdf import ROW_SDF
 from conftest import CATEGORIES
 
 SEEDS = (0, 1, 2)
@@ -64,10 +63,47 @@ def _find(obj, pred):
                                   sphere(0.1, -0.02, 0.05), torus(0.1, 0.02, arc=1.0), torus(0.1, 0.01),
                                   prism(0.1, 0.2, 5), prism(0.1, 0.05, 3), tri_prism(0.1, 0.05, 0.02, 0.1)],
                          ids=lambda p: p.geom.name)
-def test_row_sdfs_equal_the_templates(prim):
-    x = np.random.default_rng(0).normal(size=(3000, 3)) * 0.12
-    P = np.repeat(np.array([prim.params]), len(x), axis=0)
-    assert np.abs(ROW_SDF[prim.geom](P, x) - prim.geom.sdf(prim.params, x)).max() < 1e-12
+def test_piece_sdfs_have_the_right_sign_and_distance(prim):
+    """The validation SDF of every template against dense surface samples of the
+    template's own sampler and against its mesh: negative exactly inside the mesh
+    (for points more than a millimetre off the surface); never farther than the
+    nearest sample (a lower bound of the distance: a cut or a wedge only bounds it
+    outside); the distance itself, within the sample spacing, for the solids whose
+    SDF is exact (boxes, frusta, full tori) and everywhere inside convex solids."""
+    from scipy.spatial import cKDTree
+
+    from artipg.validate.shapes import Pieces
+
+    g, p = prim.geom, np.array(prim.params, dtype=float)
+    b = g.bounds(p)
+    pieces = Pieces([0], [0], np.eye(4)[None], ((b[0] + b[1]) / 2)[None], ((b[1] - b[0]) / 2)[None], [g], p[None],
+                    ["p"], [0], 0)
+    rng = np.random.default_rng(3)
+    S, _ = g.sample(np.repeat(p[None], 200_000, axis=0), rng)
+    spacing = 3.0 * np.sqrt(g.area(p[None])[0] / len(S))
+    x = (b[0] + b[1]) / 2 + rng.uniform(-0.75, 0.75, (4000, 3)) * (b[1] - b[0]) + rng.normal(size=(4000, 3)) * 0.01
+    d = pieces.sdf(np.zeros(len(x), dtype=np.int64), x)
+    nn, _ = cKDTree(S).query(x)
+    assert (np.abs(d) <= nn + 1e-9).all()
+    exact = np.ones(len(x), dtype=bool) if prim.geom.name in ("cuboid", "frustum") or \
+        (prim.geom.name == "torus" and p[2] >= 2 * np.pi) else (d < 0) & (prim.geom.name not in ("ring", "torus"))
+    assert exact.sum() > 300 or prim.geom.name in ("ring", "torus")
+    assert (np.abs(d[exact]) >= nn[exact] - spacing).all()
+    far = np.abs(d) > 1e-3
+    assert (d[far] > 0).sum() > 100 and (d[far] < 0).sum() > 100
+    assert np.array_equal(d[far] < 0, g.mesh(tuple(p), sections=256).contains(x[far]))
+
+
+def test_unknown_template_fails_with_a_clear_error():
+    from artipg.geometry.base import GeometryTemplate
+    from artipg.validate.shapes import Pieces
+
+    class Blob(GeometryTemplate):
+        name = "blob"
+        params = ("r",)
+
+    with pytest.raises(ValueError, match="Blob"):
+        Pieces([0], [0], np.eye(4)[None], np.zeros((1, 3)), np.ones((1, 3)), [Blob], np.ones((1, 1)), ["p"], [0], 0)
 
 
 def test_box_box_depth_and_distance_are_exact():

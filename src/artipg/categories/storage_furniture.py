@@ -57,13 +57,8 @@ def body(ctx):
 
 
 def _lifted(zb: float, x: float, y: float, z: float):
-    """``translation(0, 0, zb) @ translation(x, y, z)`` (4, 4), without the product.
-
-    Each entry of the product's last column sums one non-zero term (x, y) or two
-    (z and zb): any summation order rounds it once, as ``z + zb`` does; a product's
-    sums start at +0.0 (see :class:`artipg.geometry.transforms.Placer`), so a zero
-    comes out +0.0, as ``x + 0.0`` makes it."""
-    return translation(x + 0.0, y + 0.0, z + zb)
+    """``translation(0, 0, zb) @ translation(x, y, z)`` (4, 4)."""
+    return translation(x, y, z + zb)
 
 
 def _stile(part) -> float:

@@ -8,6 +8,7 @@ import zipfile
 from pathlib import Path
 from typing import List, Optional
 
+import numpy as np
 import typer
 from rich.console import Console
 from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn, TimeRemainingColumn
@@ -88,6 +89,8 @@ def _structure_rows(table: Table, structs: list[dict], pad: int) -> None:
     for key, name in (("depth_x", "depth x (m)"), ("width_y", "width y (m)"), ("height_z", "height z (m)"),
                       ("diagonal", "diagonal (m)")):
         row(name, [_mean_std(s["size"][key], ".3f") for s in structs])
+    row("height / width", [_mean_std(s["proportions"]["height_width"]) for s in structs])
+    row("depth / width", [_mean_std(s["proportions"]["depth_width"]) for s in structs])
 
 
 def _histogram_table(title: str, rows: dict) -> Table:
@@ -150,8 +153,16 @@ def _pair_categories(gen: dict, ref: dict) -> list[tuple[str, str, str]]:
 def register(app: typer.Typer) -> None:
     @app.command("eval")
     def eval_cmd(
-        generated: Path = typer.Option(..., "--generated", "-g", help="Generated set: DIR/<category>/<id>/ or a "
-                                                                         "flat folder of object folders."),
+        generated: Optional[Path] = typer.Option(None, "--generated", "-g", help="Generated set: DIR/<category>/<id>/ "
+                                                                                   "or a flat folder of object folders."),
+        generate: Optional[str] = typer.Option(None, "--generate", "-n", help="Instead of --generated: generate N "
+                                               "objects of each reference category on the fly (seeds from --first-seed); "
+                                               "'match': as many as the reference category has (balanced 1-NNA)."),
+        draws: int = typer.Option(1, "--draws", help="With --generate: average COV / MMD / 1-NNA over this many "
+                                                     "disjoint blocks of N seeds (small reference sets are noisy)."),
+        first_seed: int = typer.Option(0, "--first-seed", help="With --generate: the first object seed."),
+        pose: str = typer.Option("partnet", "--pose", help="With --generate: sample at 'rest' or in 'partnet', the "
+                                                           "pose PartNet-Mobility models the category in (laptops open)."),
         reference: Path = typer.Option(..., "--reference", "-r", help="Reference set (same layouts; "
                                                                          "PartNet-Mobility folders work)."),
         points: int = typer.Option(2048, "--points", help="Points per object."),
@@ -170,17 +181,25 @@ def register(app: typer.Typer) -> None:
         seed: int = typer.Option(0, "--seed", help="Point-sampling seed."),
         quiet: bool = typer.Option(False, "--quiet", "-q", help="No progress bars."),
     ) -> None:
-        """Compare a generated object set with a reference set, per category: COV, MMD and
-        1-NNA (Chamfer-L1), NND of each set, FID, and structure statistics side by side."""
+        """Compare a generated object set (folders, or --generate N on the fly) with a reference
+        set, per category: COV, MMD and 1-NNA (Chamfer-L1), NND of each set, FID, and structure
+        statistics (joints, links, sizes, proportions) side by side."""
         from artipg.metrics.encoder import PointNetEncoder, load_default_encoder
         from artipg.metrics.evaluate import compare_sets
         from artipg.metrics.structure import summarize_structure
 
         _check_common(points, normalize, source, workers)
-        gen = _select(_find(generated, "generated"), category, "the generated set")
         ref_found = _find(reference, "reference")
-        ref = _select(ref_found, reference_category or [c for c in category if c in ref_found], "the reference set")
-        pairs = _pair_categories(gen, ref)
+        if (generated is None) == (generate is None):
+            fail("give either --generated DIR or --generate N")
+        if generate:
+            gen, pairs, ref = _generated_pairs(generate, draws, first_seed, pose, category, reference_category,
+                                               ref_found)
+        else:
+            gen = _select(_find(generated, "generated"), category, "the generated set")
+            ref = _select(ref_found, reference_category or [c for c in category if c in ref_found],
+                          "the reference set")
+            pairs = _pair_categories(gen, ref)
         enc = None
         if not no_fid:
             if encoder is not None:
@@ -196,14 +215,21 @@ def register(app: typer.Typer) -> None:
                   "fid_encoder": None if enc is None else str(encoder or "default"), "categories": {}}
         for label, gc, rc in pairs:
             with _progress(quiet) as bar:
-                g = _load(bar, f"{gc} (generated)", gen[gc], points, source, seed, n_workers)
                 r = _load(bar, f"{rc} (reference)", ref[rc], points, source, seed, n_workers)
-                if len(g) < 1 or len(r) < 1:
+                if len(r) < 1:
                     err_console.print(f"[yellow]note:[/] {label}: nothing readable; skipped")
                     continue
-                job = bar.add_task(f"{label}: Chamfer matrix", total=len(g) + len(r))
-                res = compare_sets(g.points, r.points, normalize, "l1", n_workers, enc,
-                                   progress=lambda k: bar.advance(job, k))
+                if generate:
+                    res, g = _compare_draws(bar, gc, r, len(r) if generate == "match" else int(generate), draws, first_seed, pose, points, seed, normalize,
+                                            n_workers, enc)
+                else:
+                    g = _load(bar, f"{gc} (generated)", gen[gc], points, source, seed, n_workers)
+                    if len(g) < 1:
+                        err_console.print(f"[yellow]note:[/] {label}: nothing readable; skipped")
+                        continue
+                    job = bar.add_task(f"{label}: Chamfer matrix", total=len(g) + len(r))
+                    res = compare_sets(g.points, r.points, normalize, "l1", n_workers, enc,
+                                       progress=lambda k: bar.advance(job, k))
             res["structure"] = {"generated": summarize_structure(g.structures),
                                 "reference": summarize_structure(r.structures)}
             report["categories"][label] = res
@@ -256,6 +282,64 @@ def register(app: typer.Typer) -> None:
                 p = plot_joint_histograms(structures, plots / "joints_all.png", "movable joints per object")
                 console.print(f"wrote {p}")
         _write_json(json_out, _clean(report))
+
+
+def _generated_pairs(n: str, draws: int, first_seed: int, pose: str, category: list[str],
+                     reference_category: list[str], ref_found: dict):
+    """Categories to generate on the fly: every reference category artipg has (or the
+    ones named), paired by name."""
+    import artipg
+    from artipg.io.generated import POSES
+
+    if n != "match" and not (n.isdigit() and int(n) >= 2):
+        fail(f"--generate must be 'match' or a number of at least 2, got {n!r}")
+    if draws < 1:
+        fail(f"--draws must be at least 1, got {draws}")
+    if first_seed < 0:
+        fail(f"--first-seed must be >= 0, got {first_seed}")
+    if pose not in POSES:
+        fail(f"--pose must be one of {', '.join(POSES)}, got {pose!r}")
+    known = artipg.categories()
+    for c in category:
+        if c not in known:
+            fail(f"unknown category {c!r}; valid categories: {', '.join(known)}")
+    wanted = category or [c for c in ref_found if c in known]
+    for c in ref_found:
+        if c not in known:
+            err_console.print(f"[yellow]note:[/] reference category {c!r} is not an artipg category; skipped")
+    ref = _select(ref_found, reference_category or wanted, "the reference set")
+    if not wanted:
+        fail(f"no reference category is an artipg category; artipg has: {', '.join(known)}")
+    return {c: None for c in wanted}, [(c, c, rc) for c, rc in zip(wanted, reference_category or wanted)], ref
+
+
+def _compare_draws(bar, category, r, n, draws, first_seed, pose, points, seed, normalize, workers, enc):
+    """:func:`compare_sets` of ``draws`` disjoint blocks of ``n`` generated seeds against
+    the reference set ``r``: the set metrics averaged over the blocks (``*_draws`` keep
+    each block's value), the structure of all generated objects together."""
+    from artipg.io.generated import generated_set
+    from artipg.metrics.evaluate import compare_sets
+
+    runs, sets = [], []
+    for k in range(draws):
+        seeds = range(first_seed + k * n, first_seed + (k + 1) * n)
+        job = bar.add_task(f"{category}: generating block {k + 1}/{draws}", total=n)
+        g = generated_set(category, seeds, points, pose=pose, sampling_seed=seed,
+                          progress=lambda j: bar.advance(job, j))
+        job = bar.add_task(f"{category}: Chamfer matrix {k + 1}/{draws}", total=len(g) + len(r))
+        runs.append(compare_sets(g.points, r.points, normalize, "l1", workers, enc,
+                                 progress=lambda j: bar.advance(job, j)))
+        sets.append(g)
+    res = dict(runs[0])
+    for key in ("cov", "mmd", "one_nna", "one_nna_generated", "one_nna_reference", "nnd_generated", "fid"):
+        vals = [x[key] for x in runs if x.get(key) is not None]
+        if vals:
+            res[key] = float(np.mean(vals))
+            res[f"{key}_draws"] = vals
+    res["draws"] = draws
+    g = sets[0]
+    g.structures = [s for x in sets for s in x.structures]
+    return res, g
 
 
 def _check_common(points: int, normalize: str, source: str, workers: int) -> None:

@@ -30,6 +30,16 @@ def _r(x, nd=6):
     return x
 
 
+def category_fixed_base(name: str) -> bool:
+    """``fixed_base`` of the registered category ``name`` (False for unknown names)."""
+    import artipg
+
+    try:
+        return bool(getattr(artipg.get_category(name), "fixed_base", False))
+    except (KeyError, ValueError):
+        return False
+
+
 def annotation_dict(obj, grasps=None) -> dict:
     """Everything about ``obj`` except geometry, as JSON-ready data.
 
@@ -39,7 +49,6 @@ def annotation_dict(obj, grasps=None) -> dict:
     """
     from artipg.annotate.grasps import world_grasps
     from artipg.annotate.labels import part_frames
-    from artipg.validate.sim import category_fixed_base
 
     frames = part_frames(obj)
     g = world_grasps(obj) if grasps is None else grasps

@@ -15,3 +15,14 @@ __all__ = [
     "cuboid", "cuboid_between", "rect_ring", "cylinder", "frustum", "ring", "sphere", "torus",
     "prism", "tri_prism", "tube", "line", "arc",
 ]
+
+# The general families (docs/extending.md, "Geometry families"), exported as modules
+# (their constructors share names with them: lathe.lathe, extrusion.prism, ...); the
+# thin constructors replace today's templates when the categories switch.
+from artipg.geometry import extrusion, lathe, profile, rounded_box, sweep  # noqa: E402
+from artipg.geometry.extrusion import Extrusion  # noqa: E402
+from artipg.geometry.lathe import Lathe  # noqa: E402
+from artipg.geometry.rounded_box import RoundedBox  # noqa: E402
+from artipg.geometry.sweep import Sweep  # noqa: E402
+
+__all__ += ["Extrusion", "Lathe", "RoundedBox", "Sweep", "extrusion", "lathe", "profile", "rounded_box", "sweep"]

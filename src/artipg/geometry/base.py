@@ -25,6 +25,24 @@ from artipg.geometry.transforms import IDENTITY, apply
 TWO_PI = 2.0 * np.pi
 
 
+#: Named geometry templates (every subclass that sets ``name``), by name.
+_BY_NAME: dict[str, type] = {}
+
+
+def template_named(name: str) -> type:
+    """The geometry template whose :attr:`GeometryTemplate.name` is ``name``.
+
+    Raises
+    ------
+    KeyError
+        With the known names, when no template has that name.
+    """
+    try:
+        return _BY_NAME[name]
+    except KeyError:
+        raise KeyError(f"unknown geometry template {name!r}; known: {sorted(_BY_NAME)}") from None
+
+
 @dataclass(frozen=True)
 class CollisionPiece:
     """One convex collision element, in the primitive's local frame.
@@ -42,10 +60,25 @@ class CollisionPiece:
 
 
 class GeometryTemplate:
-    """A parametric solid. Subclasses are stateless: all methods are classmethods."""
+    """A parametric solid. Subclasses are stateless: all methods are classmethods.
+
+    A template's identity is its :attr:`name` (snake_case, unique): every table that
+    needs to tell templates apart keys on it, and :func:`template_named` finds a
+    template by it. A subclass that sets no name of its own is an abstract base.
+    """
 
     name: ClassVar[str] = ""
     params: ClassVar[tuple[str, ...]] = ()
+
+    def __init_subclass__(cls, **kwargs):
+        super().__init_subclass__(**kwargs)
+        name = cls.__dict__.get("name")
+        if not name:
+            return
+        other = _BY_NAME.get(name)
+        if other is not None and other.__qualname__ != cls.__qualname__:
+            raise ValueError(f"geometry template name {name!r} is taken by {other.__module__}.{other.__qualname__}")
+        _BY_NAME[name] = cls
 
     @classmethod
     def component_areas(cls, P: np.ndarray) -> np.ndarray:  # pragma: no cover - abstract
@@ -55,11 +88,7 @@ class GeometryTemplate:
     @classmethod
     def patches(cls, P: np.ndarray) -> list:  # pragma: no cover - abstract
         """The surface as :class:`artipg.geometry.patches.Patch` blocks, for rows of ``P``
-        (M, p); patch areas of component c sum to ``component_areas(P)[:, c]``.
-
-        The templates of :data:`artipg.geometry.kernels.CODES` have a compiled twin of
-        this and of :meth:`bounds_batch` there, which objects use: change both
-        (tests/test_framework_fast.py compares them bit for bit)."""
+        (M, p); patch areas of component c sum to ``component_areas(P)[:, c]``."""
         raise NotImplementedError
 
     @classmethod

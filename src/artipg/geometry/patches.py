@@ -1,7 +1,7 @@
 """Surface patches: the units in which every geometry template is sampled.
 
 Each template cuts its surface into components (faces, walls, caps, ends) and each
-component into one or more *patches* of six families, each with a closed-form
+component into one or more *patches* of seven families, each with an exact
 area-uniform sampler:
 
 ========  =========================================================================
@@ -15,14 +15,17 @@ band      r0 r1 z0 z1 arc nr nz: the conical band about z from (ρ = r0, z0) to
           (r1, z1), 0 <= θ <= arc, normal ``(nr cos θ, nr sin θ, nz)``
 zone      R z0 z1: the sphere of radius R between z0 and z1
 torus     R r arc: the torus about z, centre-line radius R, tube radius r
+revolved  o(3) e1(3) e3(3) r0 z0 r1 z1 bulge arc: one profile segment (line or arc)
+          revolved about an axis (:mod:`artipg.geometry.revolved`; the families'
+          curved cells)
 ========  =========================================================================
 
-Every sampler places points from uniforms in closed form (:func:`place_family`, two
-uniforms per point, the torus included: its tube angle is the exact inverse of its
-CDF), so a point cloud is one draw of uniforms: each point picks a patch in proportion
-to area and is placed on it (:func:`artipg.annotate.points.sample_points`). Templates
-return their patches from ``patches(P)`` as :class:`Patch` blocks;
-:func:`sample_family` samples them from a generator.
+:func:`sample_family` is the one sampler of every family (two uniforms per point in
+closed form; the torus's tube angle by rejection): a point cloud picks a patch per
+point in proportion to area and places it there
+(:func:`artipg.annotate.points.sample_points`), and the validation samples through
+the same function. Templates return their patches from ``patches(P)`` as
+:class:`Patch` blocks.
 """
 
 from __future__ import annotations
@@ -34,7 +37,7 @@ import numpy as np
 TWO_PI = 2.0 * np.pi
 
 #: Families in sampling order, with their parameter counts.
-FAMILIES = {"rect": 12, "tri": 12, "sector": 15, "band": 7, "zone": 3, "torus": 3}
+FAMILIES = {"rect": 12, "tri": 12, "sector": 15, "band": 7, "zone": 3, "torus": 3, "revolved": 15}
 
 
 class Patch(NamedTuple):
@@ -162,8 +165,7 @@ def _split_table(table: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 # ---------------------------------------------------------------- samplers
 # Each places one point per column of the parameters gathered per point, (p, k), from
 # two uniforms u, v (k,) in [0, 1) and writes (6, k) rows x y z nx ny nz into ``out``
-# (which it returns). The compiled point draw (artipg.annotate.draw) repeats their
-# arithmetic operation for operation.
+# (which it returns).
 
 def _affine(q, u, v, out):
     """Points ``o + u a + v b`` with normal n from rows o a b n of ``q``."""
@@ -222,9 +224,7 @@ def _zone(q, u, t, out):
 
 def torus_tube_angles(R: np.ndarray, r: np.ndarray, rng: np.random.Generator) -> np.ndarray:
     """Area-uniform tube angles (k,) in [0, 2π) of tori with centre-line radii ``R`` and
-    tube radii ``r`` (k,): density ∝ R + r cos v, by rejection (acceptance >= 1/2 as r < R).
-    A variable number of draws: :func:`sample_family` uses it (the validation replays
-    that); the point draw uses :func:`torus_tube_quantiles`."""
+    tube radii ``r`` (k,): density ∝ R + r cos v, by rejection (acceptance >= 1/2 as r < R)."""
     v = np.empty(len(R))
     todo = np.arange(len(R))
     while len(todo):
@@ -234,83 +234,6 @@ def torus_tube_angles(R: np.ndarray, r: np.ndarray, rng: np.random.Generator) ->
         v[todo[ok]] = cand[ok]
         todo = todo[~ok]
     return v
-
-
-#: Most safeguarded Halley steps of :func:`torus_tube_quantiles` (2-4 are taken for
-#: r/R <= 0.7; bisection alone would need 55 from the full bracket).
-TUBE_MAX_STEPS = 64
-#: The iteration ends after a Halley step d with k |d|^3 <= this (radians), k bounding
-#: Halley's error constant: the angle is then within about this of the root.
-TUBE_TOL = 1e-16
-
-
-def torus_tube_quantiles(R: np.ndarray, r: np.ndarray, u: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Cosines and sines (k,) of the tube angles at levels ``u`` (k,) of the
-    area-uniform law of tori with centre-line radii ``R`` and tube radii ``r`` < R (k,).
-
-    The tube angle v has density (R + r cos v) / (2πR) on [0, 2π], so its CDF is
-    (v + e sin v) / (2π) with e = r / R: v solves Kepler's equation
-    ``v + e sin v = 2π u``. Halley steps from v = 2π u, safeguarded by the bracket
-    [0, 2π] (a step leaving it bisects it instead; a negative Halley denominator takes
-    a Newton step), stop after a Halley step d with k |d|^3 <= :data:`TUBE_TOL`, where
-    k = a^2 / 4 + a / 6, a = e / (1 - e) bounds Halley's error constant; the cosine and
-    sine of the last angle are then those of the one before, rotated by d (to fourth
-    order in d, exact to rounding). One uniform per angle and no rejection, so every
-    point of the draw costs the same uniforms.
-    """
-    e = r / R
-    M = u * TWO_PI
-    n = len(M)
-    v = M.copy()  # the root for e = 0, within e of it otherwise
-    lo = np.zeros(n)
-    hi = np.full(n, TWO_PI)
-    cv = np.empty(n)
-    sv = np.empty(n)
-    todo = np.arange(n)
-    with np.errstate(divide="ignore", invalid="ignore"):  # only for r >= R
-        a = e / (1.0 - e)
-        k = 0.25 * a * a + a / 6.0
-        for _ in range(TUBE_MAX_STEPS):
-            if not len(todo):
-                break
-            vt, et = v[todo], e[todo]
-            s = np.sin(vt)
-            c = np.cos(vt)
-            g = (vt + et * s) - M[todo]
-            lt = np.where(g < 0.0, vt, lo[todo])
-            ht = np.where(g > 0.0, vt, hi[todo])
-            fp = 1.0 + et * c  # g', and g'' = -e sin v
-            den = fp * fp + 0.5 * g * et * s
-            halley = den >= 0.5 * fp * fp
-            w = vt - np.where(halley, g * fp / den, g / fp)
-            inside = (w >= lt) & (w <= ht)
-            w = np.where(inside, w, 0.5 * (lt + ht))
-            d = vt - w
-            dd = d * d
-            root = g == 0.0
-            close = halley & inside & (np.abs(d) * dd * k[todo] <= TUBE_TOL) & ~root
-            cd = 1.0 - dd * (0.5 - dd / 24.0)  # cos d and sin d to fourth order
-            sd = d * (1.0 - dd / 6.0)
-            fin = todo[root]
-            cv[fin] = c[root]
-            sv[fin] = s[root]
-            fin = todo[close]
-            cv[fin] = c[close] * cd[close] + s[close] * sd[close]
-            sv[fin] = s[close] * cd[close] - c[close] * sd[close]
-            v[todo] = w
-            lo[todo] = lt
-            hi[todo] = ht
-            todo = todo[~(root | close)]
-    if len(todo):  # no convergence (r >= R): the last angle as it stands
-        cv[todo] = np.cos(v[todo])
-        sv[todo] = np.sin(v[todo])
-    return cv, sv
-
-
-def _torus(q, u, t, out):
-    R, r, arc = q
-    cv, sv = torus_tube_quantiles(R, r, u)
-    return _torus_at(q, cv, sv, t * arc, out)
 
 
 def _torus_at(q, cv, sv, th, out):
@@ -327,41 +250,22 @@ def _torus_at(q, cv, sv, th, out):
     return out
 
 
-_PLACE = {"rect": _affine, "tri": _tri, "sector": _sector, "band": _band, "zone": _zone, "torus": _torus}
+def _revolved(q, u, v, out):
+    # the family lives in its own module, which imports this one for ``block``
+    from artipg.geometry.revolved import place_revolved
+
+    return place_revolved(q, u, v, out)
 
 
-def place_family(family: str, q: np.ndarray, u: np.ndarray, v: np.ndarray, out: np.ndarray | None = None) -> np.ndarray:
-    """One area-uniform point per column of ``q`` (p, k) on patches of ``family``, from
-    two uniforms in [0, 1) per point.
-
-    Parameters
-    ----------
-    family : str
-        A key of :data:`FAMILIES`.
-    q : (p, k) ndarray
-        Family parameters of each point's patch, primitive-local frame.
-    u, v : (k,) ndarray
-        The point's uniforms (for the torus, ``u`` sets the tube angle through
-        :func:`torus_tube_quantiles` and ``v`` the angle along the arc).
-    out : (6, k) ndarray, optional
-        Where to write the result (rows may be strided views); a new array when None.
-
-    Returns
-    -------
-    (6, k) ndarray
-        Rows x, y, z, nx, ny, nz in the primitive's local frame (unit normals).
-    """
-    if out is None:
-        out = np.empty((6, q.shape[1]))
-    return _PLACE[family](q, u, v, out)
+_PLACE = {"rect": _affine, "tri": _tri, "sector": _sector, "band": _band, "zone": _zone, "revolved": _revolved}
 
 
 def sample_family(family: str, q: np.ndarray, rng: np.random.Generator, out: np.ndarray | None = None) -> np.ndarray:
     """One area-uniform point per column of ``q`` (p, k) on patches of ``family``,
-    drawing from ``rng``: ``rng.random((2, k))`` then :func:`place_family`, except for
-    the torus, whose tube angles are drawn by rejection (:func:`torus_tube_angles`) and
-    then one arc uniform per point. (The validation's compiled samplers replay these
-    draws; the point draw of :mod:`artipg.annotate.points` uses :func:`place_family`.)
+    drawing from ``rng``: the one sampler of each family, which annotation and
+    validation both call. Two uniforms per point (``rng.random((2, k))``), except for
+    the torus, whose tube angles are drawn by rejection (:func:`torus_tube_angles`)
+    before one arc uniform per point.
 
     Parameters
     ----------
@@ -379,6 +283,8 @@ def sample_family(family: str, q: np.ndarray, rng: np.random.Generator, out: np.
     (6, k) ndarray
         Rows x, y, z, nx, ny, nz in the primitive's local frame (unit normals).
     """
+    if family not in FAMILIES:
+        raise ValueError(f"unknown patch family {family!r}; known: {sorted(FAMILIES)}")
     if out is None:
         out = np.empty((6, q.shape[1]))
     if family == "torus":

@@ -24,61 +24,25 @@ def translation(x: float = 0.0, y: float = 0.0, z: float = 0.0) -> np.ndarray:
     return T
 
 
-_EYE_FLAT = _EYE.ravel().tolist()
-
-
-def shift_of(T: np.ndarray) -> tuple[float, float, float] | None:
-    """``(x, y, z)`` of ``T`` (4, 4) when it is a pure translation (its rotation block
-    the identity and bottom row ``(0, 0, 0, 1)``, zeros of either sign), else None."""
-    if T is IDENTITY:
-        return (0.0, 0.0, 0.0)
-    a = T.ravel().tolist()
-    t = (a[3], a[7], a[11])
-    a[3] = a[7] = a[11] = 0.0
-    return t if a == _EYE_FLAT else None
 
 
 def translated(T: np.ndarray, x: float = 0.0, y: float = 0.0, z: float = 0.0) -> np.ndarray:
-    """``T @ translation(x, y, z)`` (4, 4) bit for bit, for finite ``T`` and ``x, y, z`` (metres).
-
-    When ``T`` is a pure translation (see :func:`shift_of`; the poses that the mounting
-    helpers give panels are) the product is made without a matrix product: each entry
-    of its last column sums two non-zero terms at most (``T[i, 3]`` and the argument),
-    rounded once in any order, and a product's sums start at +0.0, so its zeros are
-    +0.0 (see :class:`Placer`): ``(T[i, 3] + x) + 0.0``. Other ``T`` take the product.
-    """
-    s = shift_of(T)
-    if s is None:
-        return T @ translation(x, y, z)
-    R = _EYE.copy()
-    R[0, 3] = (s[0] + float(x)) + 0.0
-    R[1, 3] = (s[1] + float(y)) + 0.0
-    R[2, 3] = (s[2] + float(z)) + 0.0
-    return R
+    """``T @ translation(x, y, z)`` (4, 4), metres."""
+    return T @ translation(x, y, z)
 
 
 class Placer:
     """A constant rigid transform ``M`` to be placed at many points.
 
-    ``Placer(M).at(x, y, z)`` is ``translation(x, y, z) @ M`` bit for bit, without the
-    matrix product (templates place constant axis turns this way at dozens of sites).
+    ``Placer(M).at(x, y, z)`` is ``translation(x, y, z) @ M``, made by adding the
+    translation to ``M``'s last column (templates place constant axis turns this way
+    at dozens of sites).
 
     Parameters
     ----------
     M : (4, 4) array_like
         Finite, with bottom row ``(0, 0, 0, 1)`` (a rotation, optionally with a
         translation); kept as a read-only copy in :attr:`matrix`.
-
-    Notes
-    -----
-    Every term of ``(T @ M)[i, j] = sum_k T[i, k] * M[k, j]`` is a signed zero except
-    ``M[i, j]`` (and ``x * 1.0`` in the last column), so the product is exact in any
-    summation order, with or without fused multiply-adds: ``M[i, j]``, and
-    ``M[i, 3] + x`` rounded once. Only the sign of a zero result is left to the
-    product: numpy's matmul (BLAS or not) starts its sums at +0.0, so it is +0.0. The
-    placer therefore stores ``M + 0.0`` (its -0.0 made +0.0) and adds the translation
-    to a last column that holds no -0.0, whose sums cannot be -0.0 either
-    (tests/test_rules_fast.py checks it against the product, zeros included).
     """
 
     __slots__ = ("matrix", "_m", "_t")
@@ -89,14 +53,13 @@ class Placer:
             raise ValueError(f"Placer needs a finite (4, 4) matrix with bottom row (0, 0, 0, 1), got {M!r}")
         M.flags.writeable = False
         self.matrix = M
-        self._m = M + 0.0
-        self._t = tuple(self._m[:3, 3].tolist())
+        self._m = M
+        self._t = tuple(M[:3, 3].tolist())
 
     def at(self, x: float = 0.0, y: float = 0.0, z: float = 0.0) -> np.ndarray:
         """``translation(x, y, z) @ matrix`` (4, 4) for finite ``x, y, z`` (metres)."""
         T = self._m.copy()
         tx, ty, tz = self._t
-        # float() first: a float32 or int argument converts exactly, as translation() does
         T[0, 3] = float(x) + tx
         T[1, 3] = float(y) + ty
         T[2, 3] = float(z) + tz

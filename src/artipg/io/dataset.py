@@ -10,7 +10,7 @@ from typing import Callable, Sequence
 import numpy as np
 
 from artipg.io.reader import read_object
-from artipg.metrics.parallel import default_workers
+from artipg.workers import default_workers
 
 
 @dataclass

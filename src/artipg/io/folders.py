@@ -2,7 +2,8 @@
 
 Accepted layouts (an *object folder* is a directory holding ``mobility.urdf``):
 
-- ``DIR/<category>/<id>/`` as written by ``artipg generate`` (category = folder name);
+- ``DIR/<category>/<id>/`` as written by ``artipg generate`` (category = folder name,
+  snake_cased: ``StorageFurniture/`` -> ``storage_furniture``);
 - a flat ``DIR/<id>/`` of object folders (PartNet-Mobility's ``dataset/``, or a mix of
   artipg objects): the category comes from ``annotation.json`` (``category``, artipg)
   or ``meta.json`` (``model_cat``, PartNet-Mobility, e.g. ``StorageFurniture`` ->
@@ -89,5 +90,5 @@ def find_object_folders(root: str | Path) -> dict[str, list[Path]]:
             continue
         objs = [g for g in _visible_dirs(child) if is_object_folder(g)]
         if objs:
-            found.setdefault(child.name, []).extend(objs)
+            found.setdefault(snake_case(child.name), []).extend(objs)
     return {k: sorted(v, key=_sort_key) for k, v in sorted(found.items())}

@@ -10,7 +10,7 @@ import numpy as np
 from artipg.io.folders import URDF_NAME, metadata_category
 from artipg.io.sampling import sample_surface
 from artipg.io.urdf import load_urdf
-from artipg.metrics.structure import ObjectStructure
+from artipg.io.structure import ObjectStructure
 
 SOURCES = ("auto", "mesh", "npz")
 

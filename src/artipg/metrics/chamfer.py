@@ -34,7 +34,8 @@ import numpy as np
 from pykdtree import kdtree as _pykdtree
 from scipy.spatial import cKDTree
 
-from artipg.metrics.parallel import default_workers, openmp_thread_setter
+from artipg.metrics.parallel import openmp_thread_setter
+from artipg.workers import default_workers
 
 KINDS = {"l1": 1, "l2": 2}
 _QUERY_CHUNK = 1 << 20   # query points per tree call (bounds memory to ~20 MB per thread)

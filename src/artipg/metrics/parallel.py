@@ -1,19 +1,10 @@
-"""How many cores to use, and how many threads an OpenMP-parallel extension may use."""
+"""How many threads an OpenMP-parallel extension may use."""
 
 from __future__ import annotations
 
 import ctypes
-import os
 from functools import lru_cache
 from typing import Callable
-
-
-def default_workers() -> int:
-    """Cores this process may use (its CPU affinity), at least 1."""
-    try:
-        return max(1, len(os.sched_getaffinity(0)))
-    except AttributeError:
-        return max(1, os.cpu_count() or 1)
 
 
 @lru_cache(maxsize=None)

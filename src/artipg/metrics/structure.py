@@ -9,42 +9,12 @@ as in the paper's Fig. 4 (which shows 1-9 and >= 10).
 from __future__ import annotations
 
 from collections import Counter
-from dataclasses import dataclass, field
 
 import numpy as np
 
-MOVABLE_TYPES = ("revolute", "continuous", "prismatic", "planar", "floating")
+from artipg.io.structure import MOVABLE_TYPES, ObjectStructure  # noqa: F401 - re-exported
+
 JOINT_BINS = tuple(str(i) for i in range(10)) + ("10+",)
-
-
-@dataclass(frozen=True)
-class ObjectStructure:
-    """Kinematic structure and size of one object at its rest pose.
-
-    Attributes
-    ----------
-    joint_types : tuple of str
-        URDF type of every joint, fixed ones included.
-    n_links : int
-        Links that carry visual geometry.
-    extents : (3,) float ndarray
-        Axis-aligned bounding-box size (x depth, y width, z height) at the rest pose,
-        in the units of the source (metres for artipg and PartNet-Mobility).
-    """
-
-    joint_types: tuple
-    n_links: int
-    extents: np.ndarray = field(compare=False)
-
-    @property
-    def n_joints(self) -> int:
-        """Number of movable joints."""
-        return sum(1 for t in self.joint_types if t in MOVABLE_TYPES)
-
-    @property
-    def diagonal(self) -> float:
-        """Bounding-box diagonal (same units as ``extents``)."""
-        return float(np.linalg.norm(self.extents))
 
 
 def joint_histogram(counts) -> np.ndarray:
@@ -87,7 +57,9 @@ def summarize_structure(structures) -> dict:
         and ``histogram``: {bin label: fraction}); ``joint_types`` ({type: joints of that
         type per object, averaged}); ``links`` (mean/std/median/min/max of links per
         object); ``size`` ({"depth_x", "width_y", "height_z", "diagonal"}: mean/std/
-        median/min/max in metres).
+        median/min/max in metres); ``proportions`` ({"height_width", "depth_width"}:
+        the same statistics of the extents' ratios, unit-free, so unit-less sets such as
+        PartNet-Mobility compare with metric ones).
     """
     s = list(structures)
     joints = np.array([o.n_joints for o in s], dtype=float)
@@ -102,4 +74,12 @@ def summarize_structure(structures) -> dict:
         "links": _describe(links),
         "size": {"depth_x": _describe(ext[:, 0]), "width_y": _describe(ext[:, 1]), "height_z": _describe(ext[:, 2]),
                  "diagonal": _describe(np.linalg.norm(ext, axis=1))},
+        "proportions": {"height_width": _describe(_ratio(ext[:, 2], ext[:, 1])),
+                        "depth_width": _describe(_ratio(ext[:, 0], ext[:, 1]))},
     }
+
+
+def _ratio(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """``a / b`` where ``b > 0`` (objects of zero width are left out)."""
+    keep = b > 0
+    return a[keep] / b[keep]

@@ -17,7 +17,7 @@ from artipg.materials import CLASS_DENSITY
 from artipg.model.articulation import ArticulatedObject
 from artipg.model.builder import ObjectBuilder
 from artipg.rules.params import ParamRecorder
-from artipg.rules.streams import stream_key, streams
+from artipg.rules.streams import stream, stream_key
 
 
 @dataclass(frozen=True)
@@ -36,9 +36,7 @@ class SlotContext:
     Attributes
     ----------
     p : ParamRecorder
-        Recorder scoped to the slot name, on the slot's own stream. It reads the
-        stream ahead in blocks, so the slot draws only through it and its scopes
-        (never through the recorder of another slot, whose stream is closed).
+        Recorder scoped to the slot name, on the slot's own stream.
     sub : str
         The object's sub-category.
     out : dict
@@ -131,18 +129,15 @@ class Category:
         record: dict = {}
         templates: dict = {}
         overrides = overrides or {}
-        with streams(seed) as st:
-            top = ParamRecorder(st.open(0), record, overrides)
-            sub = top.choice("subcategory", self.subcategories)
-            builder = ObjectBuilder(record)
-            out: dict = {}
-            scratch = st.scratch
-            for slot, key in zip(self.order, self._keys):
-                # read ahead: the slot's recorder is the only user of its stream
-                name = slot.name
-                ctx = SlotContext(ParamRecorder._on_stream(st.open(key), record, overrides, name, scratch),
-                                  sub, out, builder, templates, name)
-                out[name] = slot.build(ctx)
+        top = ParamRecorder(stream(seed, 0), record, overrides)
+        sub = top.choice("subcategory", self.subcategories)
+        builder = ObjectBuilder(record)
+        out: dict = {}
+        for slot, key in zip(self.order, self._keys):
+            name = slot.name
+            ctx = SlotContext(ParamRecorder(stream(seed, key), record, overrides, name),
+                              sub, out, builder, templates, name)
+            out[name] = slot.build(ctx)
         obj = builder.build(self.name, sub, seed, record, templates)
         obj.materials = self.materials
         return obj

@@ -33,7 +33,7 @@ import math
 import numpy as np
 
 from artipg.geometry import Cuboid, cuboid, frustum, prism, rect_ring, ring
-from artipg.geometry.transforms import Placer, rot_y, rot_z, shift_of, translation
+from artipg.geometry.transforms import Placer, rot_y, rot_z, translation
 from artipg.model.part import Deferred, Grasp, Part, Region
 
 _ALONG_X = rot_y(math.pi / 2)    # local z -> +x (frustum r_bottom at the front, -x)
@@ -207,23 +207,14 @@ def mount_poses(pose: np.ndarray, yz) -> list:
     """Mount frames ``pose @ translation(0, y, z)`` for every (y, z) of ``yz`` (metres).
 
     ``pose`` (4, 4) is a panel's front frame; the controls laid out on it get the frames
-    from one stacked product, which numpy multiplies one matrix at a time: the same
-    floats as a product each. Returns a list of (4, 4) arrays (views of one stack).
+    from one stacked product. Returns a list of (4, 4) arrays (views of one stack).
     """
     n = len(yz)
     T = _EYES[:n].copy() if n <= len(_EYES) else np.tile(_EYES[0], (n, 1, 1))
     if not n:
         return []
-    s = shift_of(pose)
-    if s is None:
-        T[:, 1:3, 3] = yz
-        return list(pose @ T)
-    # a panel frame that is a pure translation (the usual case): each product made
-    # without the product, as transforms.translated makes it
-    x, y, z = s
-    T[:, 0, 3] = x + 0.0
-    T[:, 1:3, 3] = [((y + float(b)) + 0.0, (z + float(c)) + 0.0) for b, c in yz]
-    return list(T)
+    T[:, 1:3, 3] = yz
+    return list(pose @ T)
 
 
 def mount_knob(builder, parent, part, pose: np.ndarray, *, continuous: bool, limits=(0.0, 2 * math.pi),

@@ -66,7 +66,8 @@ def arch_handle(p, length: float | None = None) -> Part:
     """Bent round-wire "D" handle: a tube with two rounded corners."""
     L = p.uniform("length", 0.08, 0.3, fixed=length)
     r = p.uniform("wire_radius", 0.004, 0.008)
-    bend = p.uniform("bend_radius", 1.5, 3.0) * r
+    # the corners leave a straight grip of at least a fifth of the length
+    bend = p.uniform("bend_radius", 1.5, max(1.5, min(3.0, 0.4 * L / r))) * r
     standoff = max(p.uniform("standoff", 0.025, 0.045), bend + 2 * r)
     segs = [line(standoff - bend), arc(bend, -math.pi / 2), line(L - 2 * bend), arc(bend, -math.pi / 2),
             line(standoff - bend)]

@@ -12,7 +12,7 @@ import math
 
 import numpy as np
 
-from artipg.geometry.transforms import Placer, rot_x, shift_of, translated, translation
+from artipg.geometry.transforms import Placer, rot_x, translated, translation
 
 _HORIZONTAL = rot_x(math.pi / 2)  # handle frame turned so its long axis runs along y
 _HORIZONTAL_AT = Placer(_HORIZONTAL)  # translation(x, y, z) @ _HORIZONTAL as _HORIZONTAL_AT.at(x, y, z)
@@ -83,14 +83,8 @@ def handle_pose(front_pose: np.ndarray, thickness: float, y: float, z: float, ho
 
     ``front_pose`` is the panel part's pose in its link; y, z are in the panel frame.
     """
-    s = shift_of(front_pose)
-    if s is None:
-        T = front_pose @ translation(-thickness, y, z)
-        return T @ _HORIZONTAL if horizontal else T
-    # the panel poses of mount_hinged and mount_sliding are pure translations: the
-    # products made without a product, as transforms.translated and Placer make them
-    x, y, z = s[0] - float(thickness), s[1] + float(y), s[2] + float(z)
-    return _HORIZONTAL_AT.at(x, y, z) if horizontal else translation(x + 0.0, y + 0.0, z + 0.0)
+    T = front_pose @ translation(-thickness, y, z)
+    return T @ _HORIZONTAL if horizontal else T
 
 
 def free_edge_yz(side: str, size_yz, margin: float) -> tuple[float, float]:

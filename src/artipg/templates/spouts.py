@@ -61,7 +61,7 @@ def column(p, radius: float, height: float) -> Part:
 
 def _spout(template, prims, outlet, direction, extra=None) -> Part:
     dx, dy, dz = direction
-    n = math.sqrt(dx * dx + dy * dy + dz * dz)  # the sum np.linalg.norm makes (the same bits)
+    n = math.sqrt(dx * dx + dy * dy + dz * dz)
     anchors = {"outlet": tuple(outlet), "outlet_dir": (dx / n, dy / n, dz / n)}
     return Part("spout", template, prims, anchors=anchors | (extra or {}),
                 regions={"grasp": Region(("tube",)), "rotate": Region(("tube",))})

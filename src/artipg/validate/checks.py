@@ -1,7 +1,8 @@
 """The geometric checks: penetration at rest, floating links and parts, joint sweeps.
 
 All three share one batched distance pass
-(:func:`artipg.validate.contacts.pair_distance`) over three kinds of scenes:
+(:func:`artipg.validate.contacts.pair_distance`) over three kinds of scenes
+(:mod:`artipg.validate.scenes`):
 
 - *rest*: every pair of pieces of different parts whose boxes come within the
   floating tolerance; gives penetration depths between links (parent-child pairs
@@ -23,12 +24,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from artipg.validate import compiled
-from artipg.validate.contacts import (_DENSE, close_pairs, deepest_point, overlapping, pair_distance, refine_distance,
-                                      world_boxes)
-from artipg.validate.kinematics import Kinematics, rigid_inverse, rotations
+from artipg.validate.contacts import deepest_point, pair_distance, refine_distance, world_boxes
+from artipg.validate.kinematics import Kinematics
 from artipg.validate.report import CheckResult, Issue
-from artipg.validate.shapes import Pieces, _kernels_match
+from artipg.validate.scenes import OVERLAP, scenes
+from artipg.validate.shapes import Pieces
 
 
 @dataclass(frozen=True)
@@ -57,11 +57,6 @@ class Tolerances:
                 "open_fractions": list(self.open_fractions)}
 
 
-#: Boxes must overlap by this much on every axis before a pair is checked for
-#: penetration (metres): touching faces are skipped, real overlaps are not.
-_OVERLAP = 1e-4
-
-
 def run_checks(kin: Kinematics, pieces: Pieces, tol: Tolerances = Tolerances()) -> dict[str, CheckResult]:
     """Run the penetration, floating and joint-sweep checks.
 
@@ -76,20 +71,13 @@ def run_checks(kin: Kinematics, pieces: Pieces, tol: Tolerances = Tolerances()) 
     dict
         ``{"penetration": CheckResult, "floating": ..., "joint_sweep": ...}``.
     """
-    if compiled.ENABLED and pieces.n <= _DENSE and _kernels_match():
-        from artipg.validate.jit_scenes import measure
-
-        W0, c0, h0, scenes, rows = measure(kin, pieces, tol, _OVERLAP)
-        if rows[4] is not None:
-            return _compiled_results(kin, pieces, W0, scenes, rows, tol)
-    else:
-        W0, c0, h0, scenes = _scenes(kin, pieces, tol)
-    rest_s = scenes[0]
+    W0, c0, h0, found = scenes(kin, pieces, tol)
+    rest_s = found[0]
     refine_rest(pieces, W0, c0, h0, rest_s, tol)
     return {
         "penetration": _penetration(kin, pieces, rest_s, tol),
         "floating": _floating(kin, pieces, W0, rest_s, tol),
-        "joint_sweep": _sweep_result(kin, pieces, scenes[1], scenes[2:], tol),
+        "joint_sweep": _sweep_result(kin, pieces, found[1], found[2:], tol),
     }
 
 
@@ -97,8 +85,7 @@ def refine_rest(pieces: Pieces, W0: np.ndarray, c0: np.ndarray, h0: np.ndarray, 
                 tol: Tolerances) -> np.ndarray:
     """Refine, in place, the rest scene's distances ``rest["d"]`` of curved pieces whose
     samples say "apart" while their boxes say "maybe touching" (a ball on a plane), before
-    contact is judged: the numpy step that :func:`artipg.validate.jit_verdicts.verdicts`
-    compiles. ``W0`` (N, 4, 4) are the piece frames at rest, ``c0``, ``h0`` (N, 3) the
+    contact is judged. ``W0`` (N, 4, 4) are the piece frames at rest, ``c0``, ``h0`` (N, 3) the
     centres and half extents of their world boxes (metres). Returns the refined rows (k,)."""
     ra, rb, rd = rest["a"], rest["b"], rest["d"]
     amb = (~(pieces.is_box[ra] & pieces.is_box[rb]) & (rd > tol.floating)).nonzero()[0]
@@ -110,182 +97,6 @@ def refine_rest(pieces: Pieces, W0: np.ndarray, c0: np.ndarray, h0: np.ndarray, 
         rd[amb] = np.minimum(rd[amb], refine_distance(pieces, ra[amb], rb[amb], W0[ra[amb]], W0[rb[amb]],
                                                       iters=3, stop_below=tol.floating))
     return amb
-
-
-def _compiled_results(kin, pieces, W0, scenes, rows, tol) -> dict[str, CheckResult]:
-    """:func:`run_checks` from the scenes of :func:`artipg.validate.jit_scenes.measure`
-    (``rows``: their pairs and distances concatenated, the rest rows to refine): the
-    refinement and the reductions of the distances in one kernel
-    (:func:`artipg.validate.jit_verdicts.verdicts`), the issues as the numpy code."""
-    from artipg.validate.jit_contacts import _H, _OFFS, _ON_SURFACE
-    from artipg.validate.jit_verdicts import verdicts
-
-    a, b, d, sizes, amb, undrawn = rows
-    if undrawn:
-        pieces.require(np.concatenate([a[amb], b[amb]]))
-    code, aux, _ = pieces.jit_table
-    (bad, n_bad, low, comp, pcomp, has_geom, has_piece, several, split) = verdicts(
-        amb, a, b, W0, d, sizes, 3, 3, pieces.params, code, aux, pieces.points_t, pieces.start, pieces.count, _H,
-        _ON_SURFACE, _OFFS, pieces.link, pieces.part, pieces.part_link, kin.n_links, len(pieces.part_names),
-        float(tol.floating), float(tol.penetration))
-    cut = np.concatenate([[0], n_bad.cumsum()])
-    low = low.tolist()
-    per = [(bad[cut[i]:cut[i + 1]], low[i]) for i in range(len(low))]
-    graphs = (comp, pcomp, has_geom, has_piece, split, several)
-    return {
-        "penetration": _penetration(kin, pieces, scenes[0], tol, per[0]),
-        "floating": _floating(kin, pieces, W0, scenes[0], tol, graphs),
-        "joint_sweep": _sweep_result(kin, pieces, scenes[1], scenes[2:], tol, per[1:]),
-    }
-
-
-def _scenes(kin, pieces, tol):
-    """The rest, sweep and open scenes with their distances ``"d"``: ``(W0, c0, h0,
-    [rest, sweep, open...])`` (W0: piece frames at rest, c0, h0: their world boxes)."""
-    rest = kin.poses()
-    W0 = rest[pieces.link] @ pieces.T
-    c0, h0 = world_boxes(pieces, W0)
-    scenes = [_rest_pairs(pieces, c0, h0, tol), _sweep_pairs(kin, pieces, rest, W0, c0, h0, tol)]
-    movable = kin.movable()
-    if len(movable) >= 2:
-        scenes += [_open_pairs(kin, pieces, rest, f) for f in tol.open_fractions]
-    a = np.concatenate([s["a"] for s in scenes])
-    b = np.concatenate([s["b"] for s in scenes])
-    Wa = np.concatenate([s["Wa"] if s["Wa"] is not None else W0[s["a"]] for s in scenes])
-    Wb = np.concatenate([s["Wb"] if s["Wb"] is not None else W0[s["b"]] for s in scenes])
-    margin = np.array([s["margin"] for s in scenes]).repeat([len(s["a"]) for s in scenes])
-    d = pair_distance(pieces, a, b, Wa, Wb, margin)
-    k = 0
-    for s in scenes:
-        n = len(s["a"])
-        s["d"] = d[k:k + n]
-        s["Wa"], s["Wb"] = Wa[k:k + n], Wb[k:k + n]
-        k += n
-    return W0, c0, h0, scenes
-
-
-# -------------------------------------------------------------------- pair building
-
-def _rest_pairs(pieces, c0, h0, tol) -> dict:
-    """Pieces of different parts within the floating tolerance of each other at rest."""
-    a, b = close_pairs(c0, h0, tol.floating, pieces.part)
-    return {"a": a, "b": b, "Wa": None, "Wb": None, "margin": tol.floating}
-
-
-def _sweep_pairs(kin, pieces, rest, W0, c0, h0, tol) -> dict:
-    """Each movable joint at ``tol.sweep_poses`` values: moving pieces against the
-    pieces that stay at rest, culled first by swept then by per-pose boxes.
-
-    Rows come grouped by (joint, moving piece), then by static piece, then by pose."""
-    movable = kin.movable()
-    empty = np.zeros(0, dtype=np.int64)
-    out = {"a": empty, "b": empty, "Wa": np.zeros((0, 4, 4)), "Wb": np.zeros((0, 4, 4)), "margin": 0.0,
-           "scene": empty, "joint": empty, "q": np.zeros(0), "movable": movable}
-    if not len(movable) or pieces.n == 0:
-        return out
-    axes = kin.world_axes(rest)
-    subtree = kin.descendants[movable][:, pieces.link]  # (J, M): pieces each joint moves
-    scene_joint, scene_q = kin.sweep_table(tol.sweep_poses)
-    out["joint"], out["q"] = scene_joint, scene_q
-    # a solid of revolution turning about its own axis occupies the same space at
-    # every joint value: its rest result stands for the whole sweep
-    moving = subtree & ~_turns_in_place(kin, pieces, axes, W0)
-    uj, up = np.nonzero(moving)  # (joint, moving piece) pairs
-    if not len(uj):
-        return out
-    # every pose of each pair: the scenes of a joint are consecutive
-    n_pose = np.bincount(scene_joint, minlength=len(movable))
-    first = n_pose.cumsum() - n_pose
-    counts = n_pose[uj]
-    starts = counts.cumsum() - counts
-    s_idx = np.arange(counts.sum()) + (first[uj] - starts).repeat(counts)
-    p_idx = up.repeat(counts)
-    GR, Gt = _world_motions(kin, axes, scene_joint, scene_q)  # (S, 3, 3), (S, 3)
-    GR, Gt = GR[s_idx], Gt[s_idx]  # every row's
-    Rm, cm, hm = _moved_boxes(GR, Gt, W0[p_idx], c0[p_idx], pieces.half[p_idx])
-    # swept box of each (joint, moving piece) over all its poses
-    lo = np.minimum.reduceat(cm - hm, starts)
-    hi = np.maximum.reduceat(cm + hm, starts)
-    cand = overlapping(0.5 * (lo + hi), 0.5 * (hi - lo), c0, h0, -_OVERLAP) & ~subtree[uj]
-    u, b = np.nonzero(cand)
-    if not len(u):
-        return out
-    # expand the candidates over the poses of their joint and test per-pose boxes
-    n_rep = counts[u]
-    rows = np.arange(n_rep.sum()) + (starts[u] - (n_rep.cumsum() - n_rep)).repeat(n_rep)
-    bb = b.repeat(n_rep)
-    ok = (np.abs(cm[rows] - c0[bb]) - (hm[rows] + h0[bb]) < -_OVERLAP).all(axis=1)
-    rows, bb = rows[ok], bb[ok]
-    Wm = np.zeros((len(rows), 4, 4))
-    Wm[:, :3, :3] = Rm[rows]
-    Rr, t0 = GR[rows], W0[p_idx[rows], :3, 3]
-    Wm[:, :3, 3] = (Rr[:, :, 0] * t0[:, 0, None] + Rr[:, :, 1] * t0[:, 1, None] + Rr[:, :, 2] * t0[:, 2, None]
-                    + Gt[rows])
-    Wm[:, 3, 3] = 1.0
-    out.update(a=p_idx[rows], b=bb, Wa=Wm, Wb=W0[bb], scene=s_idx[rows])
-    return out
-
-
-def _moved_boxes(GR, Gt, W, c, h):
-    """Pieces (frames ``W`` (n, 4, 4), world boxes ``c``, local half extents ``h``)
-    moved by rotations ``GR`` (n, 3, 3) and translations ``Gt`` (n, 3): the rotation
-    of each moved frame (n, 3, 3) and its world box (centres, half extents: (n, 3))."""
-    R0 = W[:, :3, :3]
-    Rm = (GR[:, :, 0, None] * R0[:, 0, None, :] + GR[:, :, 1, None] * R0[:, 1, None, :]
-          + GR[:, :, 2, None] * R0[:, 2, None, :])
-    cm = GR[:, :, 0] * c[:, 0, None] + GR[:, :, 1] * c[:, 1, None] + GR[:, :, 2] * c[:, 2, None] + Gt
-    Am = np.abs(Rm)
-    hm = Am[:, :, 0] * h[:, 0, None] + Am[:, :, 1] * h[:, 1, None] + Am[:, :, 2] * h[:, 2, None]
-    return Rm, cm, hm
-
-
-def _world_motions(kin, axes, joint, q):
-    """Rigid motions (rotation (S, 3, 3), translation (S, 3)), object frame, that move
-    the subtree of joint ``kin.movable()[joint]`` from rest to joint value ``q``: a
-    turn about the joint's world axis line or a slide along its world axis (``axes``:
-    :meth:`Kinematics.world_axes` at rest)."""
-    a, p = axes[0][joint], axes[1][joint]
-    slide = kin.slides[joint]
-    M = rotations(a, np.where(slide, 0.0, q))
-    Mp = M[:, :, 0] * p[:, 0, None] + M[:, :, 1] * p[:, 1, None] + M[:, :, 2] * p[:, 2, None]
-    t = np.where(slide[:, None], q[:, None] * a, p - Mp)
-    return M, t
-
-
-def _turns_in_place(kin, pieces, axes, W0) -> np.ndarray:
-    """Boolean (J, M): piece m is a full solid of revolution (frustum, full ring or
-    torus, sphere) whose axis is joint j's (revolute or continuous) axis line."""
-    J = len(axes[0])
-    out = np.zeros((J, pieces.n), dtype=bool)
-    m = pieces.symmetric_rows
-    if not len(m) or kin.slides.all():
-        return out
-    z = W0[m, :3, 2][None]  # (1, m, 3)
-    a = axes[0][:, None, :]  # (J, 1, 3)
-    zx, zy, zz = z[..., 0], z[..., 1], z[..., 2]
-    ax, ay, az = a[..., 0], a[..., 1], a[..., 2]
-    cross = np.maximum(np.maximum(np.abs(zy * az - zz * ay), np.abs(zz * ax - zx * az)), np.abs(zx * ay - zy * ax))
-    d = W0[m, :3, 3][None] - axes[1][:, None, :]  # (J, m, 3)
-    r = d - (d * a).sum(axis=2, keepdims=True) * a
-    out[:, m] = (cross < 1e-9) & (np.sqrt((r * r).sum(axis=2)) < 1e-9) & ~kin.slides[:, None]
-    return out
-
-
-def _open_pairs(kin, pieces, rest, frac) -> dict:
-    """All joints at ``frac`` of their ranges: pairs of pieces on links whose relative
-    pose differs from rest."""
-    P = kin.poses(kin.open_values(frac))
-    W = P[pieces.link] @ pieces.T
-    c, h = world_boxes(pieces, W)
-    # links moved by the same rigid motion keep their relative pose (checked at rest)
-    G = (P @ rigid_inverse(rest))[:, :3].reshape(len(P), 12)
-    first = (np.abs(G[:, None, :] - G[None, :, :]).max(axis=2) < 1e-9).argmax(axis=1).tolist()
-    label = list(range(len(P)))
-    for i, f in enumerate(first):  # the first earlier link with the same motion
-        if f < i:
-            label[i] = label[f]
-    a, b = close_pairs(c, h, -_OVERLAP, np.array(label)[pieces.link])
-    return {"a": a, "b": b, "Wa": W[a], "Wb": W[b], "margin": 0.0, "frac": frac}
 
 
 # -------------------------------------------------------------------- results
@@ -308,16 +119,12 @@ def _worst_per_group(keys: np.ndarray, values: np.ndarray):
     return order[first]
 
 
-def _penetration(kin, pieces, s, tol, verdict=None) -> CheckResult:
-    """``verdict``: the colliding rows and the lowest distance between different
-    links (inf: none) when known (:func:`artipg.validate.jit_verdicts.verdicts`)."""
+def _penetration(kin, pieces, s, tol) -> CheckResult:
+    """Pairs of pieces of different links at rest deeper in each other than the tolerance."""
     a, b, D = s["a"], s["b"], s["d"]
-    if verdict is None:
-        cross = pieces.link[a] != pieces.link[b]
-        bad = (cross & (D < -tol.penetration)).nonzero()[0]
-        low = float(D[cross].min()) if cross.any() else np.inf
-    else:
-        bad, low = verdict
+    cross = pieces.link[a] != pieces.link[b]
+    bad = (cross & (D < -tol.penetration)).nonzero()[0]
+    low = float(D[cross].min()) if cross.any() else np.inf
     issues = []
     if len(bad):
         parts = np.sort(np.column_stack([pieces.part[a[bad]], pieces.part[b[bad]]]), axis=1)
@@ -378,8 +185,11 @@ def _gap(pieces, W0, src_mask, tgt_mask) -> float:
 
 
 def _contact_graphs(L, P, pieces, a, b, D, tol):
-    """:func:`artipg.validate.jit_scenes.contact_graphs` in numpy: the link and part
-    contact graphs of the rest pairs (see there)."""
+    """The contact graphs of the rest pairs (``D``: their distances) of ``L`` links
+    and ``P`` parts: the component label of every link (touching across links) and
+    of every part (touching within a link), whether each link / part has pieces, the
+    lowest and highest part component of every link, and whether the links with
+    geometry fall into several components."""
     touch = D <= tol.floating
     has_geom = np.bincount(pieces.link, minlength=L) > 0
     cross = touch & (pieces.link[a] != pieces.link[b])
@@ -396,24 +206,15 @@ def _contact_graphs(L, P, pieces, a, b, D, tol):
     return comp, pcomp, has_geom, has_piece, lo, hi, several
 
 
-def _floating(kin, pieces, W0, s, tol, graphs=None) -> CheckResult:
-    """``graphs``: ``(comp, pcomp, has_geom, has_piece, split, several)`` when known
-    (:func:`artipg.validate.jit_verdicts.verdicts`)."""
+def _floating(kin, pieces, W0, s, tol) -> CheckResult:
+    """Links that touch no other link (through the contact graph of the rest pairs
+    ``s``) and parts that touch no other part of their link."""
     a, b, D = s["a"], s["b"], s["d"]
     issues = []
     L = kin.n_links
     P = len(pieces.part_names)
-    if graphs is not None:
-        comp, pcomp, has_geom, has_piece, split, several = graphs
-    else:
-        if compiled.ENABLED:
-            from artipg.validate.jit_scenes import contact_graphs
-
-            comp, pcomp, has_geom, has_piece, lo, hi, several = contact_graphs(
-                L, P, pieces.link, pieces.part, pieces.part_link, a, b, D, float(tol.floating))
-        else:
-            comp, pcomp, has_geom, has_piece, lo, hi, several = _contact_graphs(L, P, pieces, a, b, D, tol)
-        split = (hi > lo).nonzero()[0]
+    comp, pcomp, has_geom, has_piece, lo, hi, several = _contact_graphs(L, P, pieces, a, b, D, tol)
+    split = (hi > lo).nonzero()[0]
     # links: one contact graph holding the root (or the first link with geometry)
     if several:
         geo = has_geom.nonzero()[0]
@@ -485,34 +286,25 @@ def _needs_open(kin, pieces, sw, tol, bad):
     the deepest penetration (P,) of each with k open (< 0: opening k clears the way for
     j; 0 where no pair of pieces overlaps); the index into ``pairs`` of each bad row
     (-1: no blocker)."""
-    if compiled.ENABLED and _kernels_match():
-        from artipg.validate.jit_scenes import needs_open_rows
-
-        row_pair, pj, pk, A, B, Wa, Wb, owner = needs_open_rows(
-            bad, sw["scene"], sw["joint"], sw["q"], sw["b"], sw["movable"], kin.parent, kin.not_fixed,
-            kin.type_codes, kin.limits, kin.origin, kin.axis, kin.descendants, pieces.link, pieces.T, pieces.center,
-            pieces.half, -_OVERLAP)
-        pairs = list(zip(pj.tolist(), pk.tolist()))
-    else:
-        j, k = _blockers(kin, pieces, sw, bad)
-        sel = (k > 0).nonzero()[0]
-        keys, first, inv = np.unique(j[sel] * kin.n_links + k[sel], return_index=True, return_inverse=True)
-        order = np.argsort(first)  # in order of first occurrence
-        rank = np.empty(len(order), dtype=np.int64)
-        rank[order] = np.arange(len(order))
-        row_pair = np.full(len(bad), -1, dtype=np.int64)
-        row_pair[sel] = rank[inv.reshape(-1)]
-        pairs = [(int(x) // kin.n_links, int(x) % kin.n_links) for x in keys[order]]
-        if not pairs:
-            return pairs, np.zeros(0), row_pair
-        up = kin.open_values(1.0)
-        Qs = []
-        for j, k in pairs:
-            qs = kin.sweep_values(j, tol.sweep_poses)
-            Q = np.zeros((len(qs), kin.n_links))
-            Q[:, j], Q[:, k] = qs, up[kin.joint_names[k]]
-            Qs.append(Q)
-        A, B, Wa, Wb, owner = _blocked_rows(kin, pieces, pairs, Qs)
+    j, k = _blockers(kin, pieces, sw, bad)
+    sel = (k > 0).nonzero()[0]
+    keys, first, inv = np.unique(j[sel] * kin.n_links + k[sel], return_index=True, return_inverse=True)
+    order = np.argsort(first)  # in order of first occurrence
+    rank = np.empty(len(order), dtype=np.int64)
+    rank[order] = np.arange(len(order))
+    row_pair = np.full(len(bad), -1, dtype=np.int64)
+    row_pair[sel] = rank[inv.reshape(-1)]
+    pairs = [(int(x) // kin.n_links, int(x) % kin.n_links) for x in keys[order]]
+    if not pairs:
+        return pairs, np.zeros(0), row_pair
+    up = kin.open_values(1.0)
+    Qs = []
+    for j, k in pairs:
+        qs = kin.sweep_values(j, tol.sweep_poses)
+        Q = np.zeros((len(qs), kin.n_links))
+        Q[:, j], Q[:, k] = qs, up[kin.joint_names[k]]
+        Qs.append(Q)
+    A, B, Wa, Wb, owner = _blocked_rows(kin, pieces, pairs, Qs)
     worst = np.full(len(pairs), -np.inf)
     if len(A):
         np.maximum.at(worst, owner, -pair_distance(pieces, A, B, Wa, Wb, 0.0))
@@ -540,19 +332,17 @@ def _blocked_rows(kin, pieces, pairs, Qs):
         ok = True
         for k in range(3):
             ok = ok & (np.abs(c[k, :, :na, None] - c[k, :, None, na:]) - (h[k, :, :na, None] + h[k, :, None, na:])
-                       < -_OVERLAP)
+                       < -OVERLAP)
         si, ia, ib = np.nonzero(ok)
         A.append(a[ia]), B.append(b[ib]), Wa.append(W[si, ia]), Wb.append(W[si, na + ib])
         owner.append(np.full(len(ia), p))
     return (np.concatenate(A), np.concatenate(B), np.concatenate(Wa), np.concatenate(Wb), np.concatenate(owner))
 
 
-def _sweep_result(kin, pieces, sw, opens, tol, verdicts=None) -> CheckResult:
-    """``verdicts``: the colliding rows and the lowest distance (inf: no rows) of the
-    sweep and of each open scene when known (:func:`artipg.validate.jit_verdicts.verdicts`)."""
-    if verdicts is None:
-        verdicts = [((s["d"] < -tol.penetration).nonzero()[0], float(s["d"].min()) if len(s["d"]) else np.inf)
-                    for s in [sw] + list(opens)]
+def _sweep_result(kin, pieces, sw, opens, tol) -> CheckResult:
+    """Collisions of the joint sweeps ``sw`` and the all-joints-open scenes ``opens``."""
+    verdicts = [((s["d"] < -tol.penetration).nonzero()[0], float(s["d"].min()) if len(s["d"]) else np.inf)
+                for s in [sw] + list(opens)]
     issues = []
     D = sw["d"]
     bad, low = verdicts[0]

@@ -24,9 +24,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from artipg.validate import compiled
+from artipg.geometry.box import _box_rows_sdf
 from artipg.validate.kinematics import rigid_inverse
-from artipg.validate.rowsdf import cuboid_rows
 from artipg.validate.shapes import Pieces
 
 _CORNERS = np.array([[a, b, c] for a in (-0.5, 0.5) for b in (-0.5, 0.5) for c in (-0.5, 0.5)])
@@ -66,7 +65,6 @@ def overlapping(ca, ha, cb, hb, pad: float) -> np.ndarray:
 
 #: Largest number of boxes for which :func:`close_pairs` tests all pairs directly.
 _DENSE = 256
-_NO_LABEL = np.zeros(0, dtype=np.int64)
 
 
 def close_pairs(c: np.ndarray, h: np.ndarray, pad: float, label: np.ndarray | None = None
@@ -81,10 +79,6 @@ def close_pairs(c: np.ndarray, h: np.ndarray, pad: float, label: np.ndarray | No
     the same test is applied to these candidates.
     """
     M = len(c)
-    if M <= _DENSE and compiled.ENABLED:
-        from artipg.validate.jit_pairs import close_pairs as close_pairs_jit
-
-        return close_pairs_jit(c, h, float(pad), _NO_LABEL if label is None else label)
     if M <= _DENSE:
         ok = overlapping(c, h, c, h, pad)
         if label is not None:
@@ -136,10 +130,6 @@ def pair_distance(pieces: Pieces, a: np.ndarray, b: np.ndarray, Wa: np.ndarray, 
     if K == 0:
         return out
     margin = _per_row(margin, K)
-    if pieces.jit_table is not None:
-        from artipg.validate import jit_contacts
-
-        return jit_contacts.pair_distance(pieces, a, b, Wa, Wb, margin)
     box = pieces.is_box[a] & pieces.is_box[b]
     i = box.nonzero()[0]
     if len(i):
@@ -191,17 +181,13 @@ def box_box(ha: np.ndarray, hb: np.ndarray, Wa: np.ndarray, Wb: np.ndarray, marg
 
 def _sat_box_box(ha, hb, Wa, Wb, margin) -> np.ndarray:
     """:func:`box_box` by the separating-axis test over the 15 axes of two oriented boxes."""
-    K = len(ha)
     A = Wa[:, :3, :3]  # columns: box axes in the world
     B = Wb[:, :3, :3]
     t = Wb[:, :3, 3] - Wa[:, :3, 3]
     # everything in a's frame: R = A^T B (columns: b's axes), T = A^T t
     R = A[:, 0, :, None] * B[:, 0, None, :] + A[:, 1, :, None] * B[:, 1, None, :] + A[:, 2, :, None] * B[:, 2, None, :]
     T = A[:, 0] * t[:, 0, None] + A[:, 1] * t[:, 1, None] + A[:, 2] * t[:, 2, None]
-    # the 15 candidate axes (a's, b's, a_i x b_j), unnormalised, in a's frame; for
-    # many pairs one coordinate at a time ((K, 15) arrays: contiguous passes), for a
-    # few as (K, 15, 3) arrays (fewer passes); the same sums in the same order
-    over = (_sat_overlaps_rows if K >= _SAT_ROWS else _sat_overlaps)(ha, hb, R, T)
+    over = _sat_overlaps(ha, hb, R, T)
     depth = over.min(axis=1)
     out = -depth
     sep = depth < 0
@@ -213,28 +199,10 @@ def _sat_box_box(ha, hb, Wa, Wb, margin) -> np.ndarray:
 
 
 def _sat_overlaps(ha, hb, R, T) -> np.ndarray:
-    """Overlap (K, 15) of boxes ``ha``, ``hb`` (K, 3) along the separating axes, in a's
-    frame (``R``: b's axes as columns, ``T``: b's centre; inf for degenerate axes)."""
-    K = len(ha)
-    axes = np.zeros((K, 15, 3))
-    axes[:, 0, 0] = axes[:, 1, 1] = axes[:, 2, 2] = 1.0
-    axes[:, 3:6] = R.transpose(0, 2, 1)
-    vx, vy, vz = R[:, 0], R[:, 1], R[:, 2]  # (K, 3): components of b_j
-    axes[:, 6:9, 1], axes[:, 6:9, 2] = -vz, vy     # a_0 x b_j
-    axes[:, 9:12, 0], axes[:, 9:12, 2] = vz, -vx   # a_1 x b_j
-    axes[:, 12:15, 0], axes[:, 12:15, 1] = -vy, vx  # a_2 x b_j
-    n = np.sqrt((axes * axes).sum(axis=2))
-    ok = n > 1e-9
-    ra = (np.abs(axes) * ha[:, None, :]).sum(axis=2)
-    P = axes[..., 0, None] * R[:, None, 0] + axes[..., 1, None] * R[:, None, 1] + axes[..., 2, None] * R[:, None, 2]
-    rb = (np.abs(P) * hb[:, None, :]).sum(axis=2)
-    dist = np.abs((axes * T[:, None, :]).sum(axis=2))
-    over = (ra + rb - dist) / np.where(ok, n, 1.0)  # overlap along each axis (negative: separated)
-    return np.where(ok, over, np.inf)
-
-
-def _sat_overlaps_rows(ha, hb, R, T) -> np.ndarray:
-    """:func:`_sat_overlaps` with each coordinate of the axes as a (K, 15) array."""
+    """Overlap (K, 15) of boxes ``ha``, ``hb`` (K, 3) along the 15 candidate separating
+    axes (a's, b's, a_i x b_j; unnormalised, in a's frame, one coordinate per (K, 15)
+    array), ``R``: b's axes as columns, ``T``: b's centre, both in a's frame; inf for
+    degenerate axes."""
     K = len(ha)
     ax, ay, az = np.zeros((3, K, 15))
     ax[:, 0] = ay[:, 1] = az[:, 2] = 1.0
@@ -250,10 +218,6 @@ def _sat_overlaps_rows(ha, hb, R, T) -> np.ndarray:
     dist = np.abs(ax * T[:, 0, None] + ay * T[:, 1, None] + az * T[:, 2, None])
     over = (ra + (rb[0] + rb[1] + rb[2]) - dist) / np.where(ok, n, 1.0)
     return np.where(ok, over, np.inf)
-
-
-#: Pairs from which :func:`_sat_box_box` works one coordinate at a time.
-_SAT_ROWS = 32
 
 
 def _aligned_box_box(ha, hb, Wa, Wb, margin) -> np.ndarray:
@@ -289,8 +253,8 @@ def box_distance(ha, hb, Wa, Wb, edge_margin=None) -> np.ndarray:
     vb_a = (R[:, None, 0, :] * vb[..., 0, None] + R[:, None, 1, :] * vb[..., 1, None]
             + R[:, None, 2, :] * vb[..., 2, None] + u[:, None, :])
     K = len(ha)
-    d1 = cuboid_rows((2 * hb).repeat(8, axis=0), va_b.reshape(-1, 3)).reshape(K, 8).min(axis=1)
-    d2 = cuboid_rows((2 * ha).repeat(8, axis=0), vb_a.reshape(-1, 3)).reshape(K, 8).min(axis=1)
+    d1 = _box_sdf(2 * hb, va_b)
+    d2 = _box_sdf(2 * ha, vb_a)
     out = np.minimum(d1, d2)
     if edge_margin is not None:  # edges matter only where the vertex bound is not yet enough
         need = (out > edge_margin).nonzero()[0]
@@ -303,6 +267,15 @@ def box_distance(ha, hb, Wa, Wb, edge_margin=None) -> np.ndarray:
         d3 = segment_distance(p0[:, :, None], p1[:, :, None], q0[:, None], q1[:, None]).reshape(len(need), -1)
         out[need] = np.minimum(out[need], d3.min(axis=1))
     return out
+
+
+def _box_sdf(size: np.ndarray, x: np.ndarray) -> np.ndarray:
+    """Smallest signed distance (K,) of points ``x`` (K, V, 3) to centred boxes of
+    extents ``size`` (K, 3): :meth:`artipg.geometry.Cuboid.sdf`'s formula with one box
+    per row (its (3, 1, n) broadcast form)."""
+    K, V = x.shape[:2]
+    ax = np.abs(x.reshape(-1, 3).T)[:, None, :]  # (3, 1, K V)
+    return _box_rows_sdf(ax, size.repeat(V, axis=0).T)[0].reshape(K, V).min(axis=1)
 
 
 def segment_distance(p0, p1, q0, q1) -> np.ndarray:
@@ -416,11 +389,6 @@ def refine_distance(pieces: Pieces, a: np.ndarray, b: np.ndarray, Wa: np.ndarray
     K = len(a)
     if K == 0:
         return np.zeros(0)
-    if pieces.jit_table is not None:
-        from artipg.validate import jit_base, jit_contacts
-
-        if jit_base.kernels_match():
-            return jit_contacts.refine_distance(pieces, a, b, Wa, Wb, starts, iters, stop_below)
     src = np.concatenate([a, b])
     tgt = np.concatenate([b, a])
     Ws = np.concatenate([Wa, Wb])

@@ -117,7 +117,7 @@ def validate_folder(folder, tol: Tolerances = Tolerances(), simulate: bool = Tru
 def annotated_fixed_base(annotation: Path) -> bool:
     """Whether the object of ``annotation`` (an ``annotation.json``, possibly missing)
     is a fixture: its validation report's ``fixed_base``, else its category's policy."""
-    from artipg.validate.sim import category_fixed_base
+    from artipg.export.annotation import category_fixed_base
 
     try:
         ann = json.loads(Path(annotation).read_text())

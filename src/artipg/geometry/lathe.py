@@ -1,0 +1,294 @@
+"""The lathe family: a closed (ρ, z) profile of line segments and arcs revolved about
+the local z axis over ``0 <= θ <= arc`` (from +x towards +y).
+
+``Lathe(n)`` is the family of ``n``-segment profiles. A row holds, per profile vertex,
+``(r, z, b, on)`` (the vertex, the bulge of the segment leaving it, see
+:mod:`artipg.geometry.profile`, and whether that segment's surface is part of the
+sampled surface), then ``arc``, ``cap0``, ``cap1`` (whether the flat ends at θ = 0 and
+θ = arc are sampled; they exist only for partial turns). The profile runs
+counter-clockwise in the (ρ, z) plane with ρ >= 0; a profile that touches the axis
+gives a solid, one that does not a hollow (ring-like) solid; segments on the axis have
+no area. ``on = 0`` segments and ends are open joints (the inside of a swept tube):
+the solid (SDF, mesh, volume) stays closed, only sampling and area leave them out.
+
+The flat ends of partial turns are triangle cells for polygonal profiles, disc
+(sector) cells for circle profiles (the torus), and regions sampled by rejection for
+other profiles with arcs (:mod:`artipg.geometry.family`).
+
+Thin constructors :func:`cylinder`, :func:`frustum`, :func:`ring`, :func:`sphere` and
+:func:`torus` give today's :mod:`artipg.geometry.revolve` templates as lathe primitives.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from artipg.geometry import profile
+from artipg.geometry.base import TWO_PI, CollisionPiece, Primitive, convex_hull, wedge_sdf
+from artipg.geometry.family import Family, Region, convex_pieces, rejection_region, row_triangles, triangulate, weld
+from artipg.geometry.patches import sectors, tris
+from artipg.geometry.revolve import _arc_bounds, revolve_arrays, sector_hulls
+from artipg.geometry.revolved import cells
+from artipg.geometry.transforms import IDENTITY
+
+_FULL = TWO_PI - 1e-9
+
+
+class Lathe(Family):
+    """Profiles of ``key`` segments revolved about z (see the module docstring)."""
+
+    kind = "lathe"
+
+    def param_names(self):
+        n = self.key
+        return tuple(f"{c}{i}" for i in range(n) for c in ("r", "z", "b", "on")) + ("arc", "cap0", "cap1")
+
+    def n_components(self):
+        return self.key + 2  # the segments' surfaces, then the ends at θ = 0 and θ = arc
+
+    @staticmethod
+    def loop(p) -> np.ndarray:
+        """The profile loop (n, 3) of row ``p``: rows (ρ, z, bulge)."""
+        p = np.asarray(p, dtype=float)
+        return p[:-3].reshape(-1, 4)[:, :3]
+
+    def _split(self, P):
+        n = self.key
+        V = P[:, :4 * n].reshape(len(P), n, 4)
+        return V, P[:, 4 * n], P[:, 4 * n + 1:4 * n + 3]
+
+    def patches(self, P):
+        P = np.atleast_2d(np.asarray(P, dtype=float))
+        V, arc, caps = self._split(P)
+        arc = np.minimum(arc, TWO_PI)
+        r0, z0, b, on = V[..., 0].T, V[..., 1].T, V[..., 2].T, V[..., 3].T
+        r1, z1 = np.roll(r0, -1, axis=0), np.roll(z0, -1, axis=0)
+        walls = cells(np.arange(self.key), (0.0, 0.0, 0.0), (1.0, 0.0, 0.0), (0.0, 0.0, 1.0),
+                      r0, z0, r1, z1, b, arc, scale=on)
+        out = [walls]
+        if not (V[..., 2] != 0).any() and (arc < _FULL).any():
+            out += self._end_tris(V, arc, caps)
+        circ = self._circles(V)
+        if circ.any() and (arc < _FULL).any():
+            out.append(self._end_discs(V, arc, caps * (circ * (arc < _FULL))[:, None]))
+        return out
+
+    def _circles(self, V) -> np.ndarray:
+        """(M,) 1.0 where the profile is a circle (two half circles: a torus): its ends
+        are discs, sector cells, instead of rejection-sampled regions."""
+        if self.key != 2:
+            return np.zeros(len(V))
+        return ((V[:, 0, 2] == 1.0) & (V[:, 1, 2] == 1.0)).astype(float)
+
+    def _end_discs(self, V, arc, on):
+        """The disc ends (comps n, n+1) of circle profiles, switched on by ``on`` (M, 2)."""
+        centre = 0.5 * (V[:, 0, :2] + V[:, 1, :2])
+        rad = 0.5 * np.hypot(*(V[:, 0, :2] - V[:, 1, :2]).T)
+        ends = np.stack([np.zeros_like(arc), arc])
+        ce, se = np.cos(ends), np.sin(ends)
+        sg = np.array([[-1.0], [1.0]])  # the θ = 0 end faces -θ, the θ = arc end +θ
+        rho, z = centre[:, 0], centre[:, 1]
+        return sectors(np.array([self.key, self.key + 1]), (rho * ce, rho * se, z), (ce, se, 0.0), (0.0, 0.0, 1.0),
+                       (-se * sg, ce * sg, 0.0), 0.0, rad, TWO_PI, scale=on.T)
+
+    def _end_tris(self, V, arc, caps):
+        """The flat ends of partial turns of polygonal profiles as triangles (comps n, n+1)."""
+        n = self.key
+        T = row_triangles(V.reshape(len(V), -1), lambda row: [row.reshape(n, 4)[:, :2]])
+        part = (arc < _FULL).astype(float)
+        A, B, C = (V[np.arange(len(V))[:, None], T[:, :, k], :2].transpose(1, 0, 2) for k in range(3))
+        out = []
+        for e, ang in ((0, np.zeros_like(arc)), (1, arc)):
+            c, s = np.cos(ang), np.sin(ang)
+            sg = -1.0 if e == 0 else 1.0
+            # (ρ, z) -> (ρ cos a, ρ sin a, z); the θ = 0 end faces -y, the θ = arc end +θ
+            def lift(Q):
+                return (Q[..., 0] * c, Q[..., 0] * s, Q[..., 1])
+            o, a1, b1 = lift(A), lift(B - A), lift(C - A)
+            t = tris(np.full(T.shape[1], self.key + e), o, a1, b1, (-s * sg, c * sg, 0.0),
+                     scale=part * caps[:, e])
+            out.append(t)
+        return out
+
+    def regions(self, P):
+        P = np.atleast_2d(np.asarray(P, dtype=float))
+        V, arc, caps = self._split(P)
+        if not (V[..., 2] != 0).any() or not (arc < _FULL).any():
+            return []
+        area = np.abs(profile.loop_area(V[..., :3])) * (arc < _FULL) * (1.0 - self._circles(V))
+        out = []
+        for e in (0, 1):
+            def ang(p, e=e):
+                return 0.0 if e == 0 else min(p[-3], TWO_PI)
+
+            def ex(p, ang=ang):
+                return np.array([math.cos(ang(p)), math.sin(ang(p)), 0.0])
+
+            def nrm(p, e=e, ang=ang):
+                sg = -1.0 if e == 0 else 1.0
+                return sg * np.array([-math.sin(ang(p)), math.cos(ang(p)), 0.0])
+
+            draw = rejection_region(lambda p: [self.loop(p)], lambda p: np.zeros(3), ex,
+                                    lambda p: np.array([0.0, 0.0, 1.0]), nrm)
+            out.append(Region(self.key + e, area * caps[:, e], draw))
+        return out
+
+    def sdf(self, p, x):
+        """Exact for full turns (the 2-D distance in the meridian half-plane); partial
+        turns take the max with the wedge's planes: exact sign, a lower bound of the
+        distance outside the wedge."""
+        x = np.asarray(x, dtype=float)
+        q = np.column_stack([np.hypot(x[:, 0], x[:, 1]), x[:, 2]])
+        loop = self.loop(p)
+        d = profile.sdf([loop], q, [_on_axis(loop)])
+        return np.maximum(d, wedge_sdf(x, min(p[-3], TWO_PI)))
+
+    def bounds(self, p):
+        b = profile.bounds(self.loop(p))
+        return _arc_bounds(max(b[0, 0], 0.0), b[1, 0], min(p[-3], TWO_PI), b[0, 1], b[1, 1])
+
+    def _poly(self, p, sections):
+        poly = profile.polygonise(self.loop(p), sections)
+        keep = np.any(poly != np.roll(poly, 1, axis=0), axis=1)  # drop repeated vertices
+        poly = poly[keep]
+        poly[:, 0] = np.maximum(poly[:, 0], 0.0)
+        return poly
+
+    def mesh_arrays(self, p, sections=32):
+        poly = self._poly(p, sections)
+        arc = min(float(p[-3]), TWO_PI)
+        if arc >= _FULL:
+            return revolve_arrays(poly, sections=sections)
+        V, F = revolve_arrays(poly, arc=arc, sections=sections, cap_start=False, cap_end=False)
+        T = triangulate([poly])
+        parts_V, parts_F = [V], [F]
+        base = len(V)
+        n_sec = max(2, int(math.ceil(sections * arc / TWO_PI)))
+        th_end = np.linspace(0.0, arc, n_sec + 1)[-1]
+        for th, flip in ((0.0, False), (th_end, True)):
+            E = np.column_stack([poly[:, 0] * math.cos(th), poly[:, 0] * math.sin(th), poly[:, 1]])
+            parts_V.append(E)
+            parts_F.append((T[:, ::-1] if flip else T) + base)
+            base += len(E)
+        return weld(np.concatenate(parts_V), np.concatenate(parts_F))
+
+    def volume(self, p):
+        """Pappus: arc x ∫∫ ρ dA of the profile, in closed form."""
+        return float(min(p[-3], TWO_PI) * moment(self.loop(p)))
+
+    def collision(self, p):
+        """Convex pieces of the profile (triangulation merged greedily), each revolved:
+        one hull for a full turn of a piece on the axis, else equal convex sectors."""
+        arc = min(float(p[-3]), TWO_PI)
+        out = []
+        for piece in convex_pieces([self._poly(p, 24)]):
+            if arc >= _FULL and piece[:, 0].min() <= 1e-12:
+                V, F = convex_hull(revolve_arrays(piece, sections=24)[0])
+                out.append(CollisionPiece("mesh", vertices=V, faces=F))
+            else:
+                out += sector_hulls(piece, arc, piece[:, 0].min())
+        return out
+
+    def uv_bounds(self, p):
+        return np.array([[0.0, 0.0], [1.0, profile.perimeter(self.loop(p))[-1]]])
+
+    def uv(self, p, x, n=None):
+        """u = θ / arc in [0, 1], v = arc length (m) along the profile of the closest
+        profile point, in [0, perimeter]."""
+        x = np.asarray(x, dtype=float)
+        arc = min(float(p[-3]), TWO_PI)
+        th = np.mod(np.arctan2(x[:, 1], x[:, 0]), TWO_PI)
+        if arc < _FULL:
+            th = np.where(th > 0.5 * (arc + TWO_PI), 0.0, np.minimum(th, arc))
+        q = np.column_stack([np.hypot(x[:, 0], x[:, 1]), x[:, 2]])
+        loop = self.loop(p)
+        return np.column_stack([th / arc, profile.loop_length_at(loop, q, _on_axis(loop))])
+
+
+def _on_axis(loop) -> np.ndarray:
+    """Mask (n,) of the straight profile segments lying on the axis (no surface)."""
+    return (loop[:, 0] == 0.0) & (np.roll(loop[:, 0], -1) == 0.0) & (loop[:, 2] == 0.0)
+
+
+def moment(loop) -> float:
+    """∫∫ ρ dA over a counter-clockwise (ρ, z) profile loop (n, 3), m^3: Green's
+    ∮ ρ²/2 dz, in closed form per line segment and arc."""
+    p0, p1, b = profile.segments(np.asarray(loop, dtype=float))
+    r0, z0, r1, z1 = p0[:, 0], p0[:, 1], p1[:, 0], p1[:, 1]
+    line = (z1 - z0) * (r0 * r0 + r0 * r1 + r1 * r1) / 6.0
+    c, R, a0, d = profile.arc_geometry(p0, p1, b)
+    R = np.where(np.isfinite(R), R, 0.0)
+    a1 = a0 + d
+
+    def F(a):  # ∫ (c + R cos a)² R cos a / 2 da
+        cr = c[:, 0]
+        return 0.5 * R * (cr * cr * np.sin(a) + 2 * cr * R * (a / 2 + np.sin(2 * a) / 4)
+                          + R * R * (np.sin(a) - np.sin(a) ** 3 / 3))
+
+    return float(np.where(b == 0.0, line, F(a1) - F(a0)).sum())
+
+
+# ---------------------------------------------------------------- constructors
+
+def lathe(loop, arc: float = TWO_PI, on=None, caps=(True, True), pose: np.ndarray = IDENTITY,
+          role: str = "") -> Primitive:
+    """A lathe primitive of a (ρ, z) profile loop (n, 3) (oriented counter-clockwise
+    here); ``on`` (n,) flags the sampled segments (default all)."""
+    loop = np.array(loop, dtype=float)
+    if (loop[:, 0] < -1e-12).any():
+        raise ValueError("a lathe profile needs ρ >= 0")
+    flip = profile.loop_area(loop) < 0
+    loop = profile.oriented(loop, True)
+    n = len(loop)
+    on = np.ones(n) if on is None else np.asarray(on, dtype=float)
+    if flip:  # keep each flag with its segment: reversed segment k is old n-2-k
+        on = np.roll(on[::-1], -1)
+    row = np.column_stack([loop, on]).ravel()
+    params = tuple(float(v) for v in row) + (float(arc), float(caps[0]), float(caps[1]))
+    return Primitive(Lathe(n), params, pose, role)
+
+
+def frustum(r_bottom: float, r_top: float, height: float, caps=(True, True), pose: np.ndarray = IDENTITY,
+            role: str = "") -> Primitive:
+    """A frustum along z centred on the origin (:class:`~artipg.geometry.revolve.Frustum`);
+    ``caps`` (bottom, top) False leaves that disc out of the sampled surface."""
+    h = height / 2
+    loop = profile.polygon([[0.0, -h], [r_bottom, -h], [r_top, h], [0.0, h]])
+    return lathe(loop, on=[float(caps[0]), 1.0, float(caps[1]), 0.0], pose=pose, role=role)
+
+
+def cylinder(radius: float, height: float, caps=(True, True), pose: np.ndarray = IDENTITY, role: str = "") -> Primitive:
+    """A cylinder along z centred on the origin."""
+    return frustum(radius, radius, height, caps, pose, role)
+
+
+def ring(r_out: float, r_in: float, height: float, arc: float = TWO_PI, taper: float = 0.0,
+         pose: np.ndarray = IDENTITY, role: str = "") -> Primitive:
+    """A hollow cylinder wall (:class:`~artipg.geometry.revolve.Ring`): radii at the
+    bottom, both growing by ``taper`` to the top, over ``arc``."""
+    h = height / 2
+    loop = profile.polygon([[r_in, -h], [r_out, -h], [r_out + taper, h], [r_in + taper, h]])
+    return lathe(loop, arc=arc, pose=pose, role=role)
+
+
+def sphere(radius: float, z_lo: float | None = None, z_hi: float | None = None, arc: float = TWO_PI,
+           pose: np.ndarray = IDENTITY, role: str = "") -> Primitive:
+    """The slab ``z_lo <= z <= z_hi`` of a sphere (:class:`~artipg.geometry.revolve.Sphere`),
+    closed by flat discs, optionally over a partial turn."""
+    R = float(radius)
+    lo = -R if z_lo is None else float(z_lo)
+    hi = R if z_hi is None else float(z_hi)
+    a0, a1 = math.asin(max(-1.0, lo / R)), math.asin(min(1.0, hi / R))
+    r_lo, r_hi = math.sqrt(max(R * R - lo * lo, 0.0)), math.sqrt(max(R * R - hi * hi, 0.0))
+    loop = np.array([[0.0, lo, 0.0], [r_lo, lo, math.tan((a1 - a0) / 4)], [r_hi, hi, 0.0], [0.0, hi, 0.0]])
+    return lathe(loop, arc=arc, pose=pose, role=role)
+
+
+def torus(R: float, r: float, arc: float = TWO_PI, caps=(True, True), pose: np.ndarray = IDENTITY,
+          role: str = "") -> Primitive:
+    """A torus (arc) about z (:class:`~artipg.geometry.revolve.Torus`): two half-circle
+    arcs revolved; ``caps`` close the ends of a partial arc."""
+    loop = np.array([[R + r, 0.0, 1.0], [R - r, 0.0, 1.0]])
+    return lathe(loop, arc=arc, caps=caps, pose=pose, role=role)
