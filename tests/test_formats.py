@@ -460,7 +460,7 @@ def test_mjx_accepts_the_model(out, category):
 
 
 @pytest.mark.parametrize("category", CATEGORIES)
-def test_urdf_loads_in_sapien_on_cpu(out, category):
+def test_urdf_loads_in_sapien_on_cpu(out, category, tmp_path):
     """SAPIEN (where it installs; physics only, no rendering device needed) builds the
     articulation with the model's links, degrees of freedom and masses."""
     import warnings
@@ -468,10 +468,21 @@ def test_urdf_loads_in_sapien_on_cpu(out, category):
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # its import warns when the system has no Vulkan
         sapien = pytest.importorskip("sapien")
+    import shutil
+    import xml.etree.ElementTree as ET
+
     obj = model(category, 0)
+    # SAPIEN turns every <material> into a render material, which needs a rendering
+    # device: load a copy without them (physics only)
+    tree = ET.parse(folder(out, category, 0) / "mobility.urdf")
+    for parent in tree.getroot().iter():
+        for m in parent.findall("material"):
+            parent.remove(m)
+    copy = shutil.copytree(folder(out, category, 0), tmp_path / "obj")
+    urdf = copy / "mobility_physics_only.urdf"
+    tree.write(urdf)
     scene = sapien.Scene([sapien.physx.PhysxCpuSystem()])
-    builder = scene.create_urdf_loader().load_file_as_articulation_builder(
-        str(folder(out, category, 0) / "mobility.urdf"))
+    builder = scene.create_urdf_loader().load_file_as_articulation_builder(str(urdf))
     for lb in builder.link_builders:
         lb.visual_records = []  # rendering needs a GPU
     art = builder.build()

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-__version__ = "0.1.0"
+__version__ = "0.2.0"
 
 # Import the registry package *before* defining the function of the same name: the
 # import binds the attribute ``artipg.categories`` to the sub-package once, and the

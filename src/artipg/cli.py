@@ -18,6 +18,7 @@ COMMAND_MODULES = (
     "artipg.commands.validate",
     "artipg.commands.convert",
     "artipg.commands.view",
+    "artipg.commands.fit",
 )
 
 app = typer.Typer(add_completion=False, no_args_is_help=True, pretty_exceptions_enable=False,

@@ -66,6 +66,8 @@ MATERIAL = {
     "touchpad": "plastic", "temple": "plastic",
     "glass": "glass", "lens": "glass", "screen": "glass",
     "wheel": "rubber", "pedal": "rubber",
+    "stand": "plastic", "sphere": "plastic", "clip": "steel", "refill": "plastic", "connector": "steel",
+    "cover": "steel",
 }
 DEFAULT_CLASS = "plastic"
 

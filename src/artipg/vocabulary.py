@@ -46,6 +46,12 @@ SEMANTIC_LABELS: tuple[str, ...] = (
     "nozzle",
     "lens",        # eyeglass lens
     "touchpad",    # laptop touchpad
+    "stand",       # display neck / column / height carriage, globe stand
+    "sphere",      # globe ball
+    "clip",        # pen pocket clip
+    "refill",      # pen refill point, glue stick column
+    "connector",   # USB plug, its sliding carriage
+    "cover",       # swivel cover of a flash drive
 )
 
 LABEL_ID: dict[str, int] = {name: i for i, name in enumerate(SEMANTIC_LABELS)}

@@ -84,7 +84,7 @@ def screen(ctx):
     lid = screen_lid(p, W, ax + D / 2, t, rim, rb)
     # the highest back corner of the lid swings below the axis past 90 degrees
     floor = math.acos(max(-1.0, -az / (rb + rim + t))) - 0.02
-    lim = min(p.uniform("limit", 1.9, 2.4), floor)
+    lim = min(p.uniform("limit", 1.9, 3.0), floor)  # some real screens open flat (fit on the development split)
     link = ctx.builder.create_link("screen", root)
     link.set_joint("revolute", translation(ax, 0, az), axis=(0, 1, 0), limits=(0.0, lim))
     link.add(lid)

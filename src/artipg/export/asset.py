@@ -163,12 +163,14 @@ class Asset:
 
 def obj_arrays(text: str) -> tuple[np.ndarray, np.ndarray]:
     """Vertices (V, 3) and triangles (F, 3) of Wavefront OBJ text with ``v`` and
-    triangular ``f`` lines (as :func:`artipg.export.meshes.obj_text` writes)."""
+    triangular ``f`` lines (as :mod:`artipg.export.meshes` writes them, with or without
+    texture and normal indices)."""
     lines = text.splitlines()
     v = [ln[2:] for ln in lines if ln.startswith("v ")]
     f = [ln[2:] for ln in lines if ln.startswith("f ")]
     V = np.array(" ".join(v).split(), dtype=float).reshape(-1, 3)
-    F = np.array(" ".join(f).split(), dtype=np.int64).reshape(-1, 3) - 1
+    # face corners may be "v", "v/vt" or "v/vt/vn": the vertex index comes first
+    F = np.array([c.split("/", 1)[0] for c in " ".join(f).split()], dtype=np.int64).reshape(-1, 3) - 1
     return V, F
 
 
