@@ -20,7 +20,7 @@ import math
 
 import numpy as np
 
-from artipg.geometry import cuboid_between, cylinder, frustum, ring, sphere
+from artipg.geometry import BOX, cuboid_between, cylinder, frustum, ring, sphere
 from artipg.geometry.transforms import translation
 from artipg.model.part import Part, Region
 
@@ -126,7 +126,7 @@ def rolled(clip: Part, angle: float) -> Part:
     R = np.array([[c, -s, 0.0, 0.0], [s, c, 0.0, 0.0], [0.0, 0.0, 1.0, 0.0], [0.0, 0.0, 0.0, 1.0]])
     prims = []
     for q in clip.primitives:
-        if q.geom.name == "cuboid":
+        if q.geom is BOX:
             prims.append(q.placed(R))
         else:
             T = q.pose.copy()

@@ -268,7 +268,7 @@ def _lathe_traits(pieces, rows, P):
     R = d.max(axis=1)
     ball = (full & (arc.sum(axis=1) == 1) & (d.min(axis=1) >= R * (1 - 1e-12))
             & (np.where(arc, np.hypot(c[..., 0], c[..., 1]), 0.0).max(axis=1) <= 1e-12 * R)
-            & (V[:, 0, 1] <= -R * (1 - 1e-12)) & (V[:, 2, 1] >= R * (1 - 1e-12)))
+            & (V[..., 1].min(axis=1) <= -R * (1 - 1e-12)) & (V[..., 1].max(axis=1) >= R * (1 - 1e-12)))
     pieces.is_ball[rows] = ball
     pieces.ball_radius[rows] = np.where(ball, R, 0.0)
 
