@@ -230,7 +230,7 @@ def test_drawer_wider_than_its_opening_is_caught_as_penetration():
             lo, hi = pr.bounds()
             lo[1] -= grow if abs(lo[1] - y0) < 1e-9 else 0.0
             hi[1] += grow if abs(hi[1] - y1) < 1e-9 else 0.0
-            pr = Primitive(pr.geom, tuple(hi - lo), translation(*((lo + hi) / 2)), pr.role)
+            pr = Primitive(pr.geom, tuple(hi - lo) + (0.0,), translation(*((lo + hi) / 2)), pr.role)
         new.append(pr)
     drawer.primitives = new
     _invalidate(obj)

@@ -196,7 +196,7 @@ class Lathe(Family):
             return [CollisionPiece("sphere", (float(R),))]
         arc = min(float(p[-3]), TWO_PI)
         out = []
-        for piece in convex_pieces([self._poly(p, 24)]):
+        for piece in convex_pieces([self._poly(p, 48)]):  # arcs: 48 chords a turn, as fine as the mesh of a half turn
             if arc >= _FULL and piece[:, 0].min() <= 1e-12:
                 V, F = convex_hull(revolve_arrays(piece, sections=24)[0])
                 out.append(CollisionPiece("mesh", vertices=V, faces=F))

@@ -146,7 +146,7 @@ def lever_stop(lid: Part, beta: float, bracket_top: float, handle_drop: float) -
     radius behind the axis) or of the handle's top, ``handle_drop`` below the axis."""
     rk = lid.anchors["knuckle"][0]
     zk = lid.anchors["hinge"][2]
-    lt, _, L = lid.primitives[3].params
+    lt, _, L = lid.primitives[3].params[:3]  # the lever box (sx, sy, sz)
     floor_b = zk - bracket_top
     th = np.linspace(0.0, math.pi, 181)
     phi = beta + th

@@ -31,6 +31,7 @@ import numpy as np
 from artipg.geometry import profile
 from artipg.geometry.base import pick
 from artipg.geometry.extrusion import Extrusion
+from artipg.geometry.family import Family
 from artipg.geometry.lathe import Lathe
 from artipg.geometry.patches import sample_family
 from artipg.geometry.rounded_box import BOX, RoundedBox
@@ -280,7 +281,7 @@ def traits(geom):
         return _box_traits
     if isinstance(geom, Lathe):
         return _lathe_traits
-    if hasattr(geom, "patches") and hasattr(geom, "sdf"):
+    if isinstance(geom, Family):
         return _no_traits
     raise ValueError(f"validation does not know geometry {getattr(geom, '__name__', geom)!r}")
 
