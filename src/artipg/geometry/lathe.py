@@ -155,7 +155,9 @@ class Lathe(Family):
         return arc_bounds(np.maximum(b[:, 0, 0], 0.0), b[:, 1, 0], np.minimum(arc, TWO_PI), b[:, 0, 1], b[:, 1, 1])
 
     def _poly(self, p, sections):
-        poly = profile.polygonise(self.loop(p), sections)
+        """The profile as a polygon: arcs get ``sections`` chords per half turn (a
+        sphere's meridian as fine as its ``sections`` per turn around the axis)."""
+        poly = profile.polygonise(self.loop(p), 2 * sections)
         keep = np.any(poly != np.roll(poly, 1, axis=0), axis=1)  # drop repeated vertices
         poly = poly[keep]
         poly[:, 0] = np.maximum(poly[:, 0], 0.0)
@@ -196,7 +198,7 @@ class Lathe(Family):
             return [CollisionPiece("sphere", (float(R),))]
         arc = min(float(p[-3]), TWO_PI)
         out = []
-        for piece in convex_pieces([self._poly(p, 48)]):  # arcs: 48 chords a turn, as fine as the mesh of a half turn
+        for piece in convex_pieces([self._poly(p, 24)]):
             if arc >= _FULL and piece[:, 0].min() <= 1e-12:
                 V, F = convex_hull(revolve_arrays(piece, sections=24)[0])
                 out.append(CollisionPiece("mesh", vertices=V, faces=F))
