@@ -26,7 +26,7 @@ import numpy as np
 from artipg.validate.checks import Tolerances, run_checks
 from artipg.validate.kinematics import Kinematics
 from artipg.validate.report import Report
-from artipg.validate.shapes import Pieces
+from artipg.validate.mesh_sdf import MeshPieces
 
 #: Largest difference (metres / radians) between a folder's URDF joints and the
 #: regenerated object's for the exact path to be used.
@@ -52,7 +52,8 @@ def find_urdf(folder: Path) -> Path:
 
 def find_objects(paths) -> list[Path]:
     """Object folders under ``paths``: a folder with a URDF is an object, any other
-    folder is searched recursively for ``mobility.urdf`` files."""
+    folder is searched recursively for ``mobility.urdf`` files (not inside object
+    folders)."""
     out: list[Path] = []
     for p in map(Path, paths):
         try:
@@ -62,20 +63,27 @@ def find_objects(paths) -> list[Path]:
         except FileNotFoundError:
             pass
         if p.is_dir():
-            out += sorted(u.parent for u in p.rglob("mobility.urdf") if not u.parent.name.startswith(".tmp-"))
+            found = sorted(u.parent for u in p.rglob("mobility.urdf") if not u.parent.name.startswith(".tmp-"))
+            # a folder inside an object folder is part of that object (a copy's leftovers)
+            keep = set(found)
+            out += [f for f in found if not any(q in keep for q in f.parents)]
         else:
             raise FileNotFoundError(f"{p}: not an object folder")
     return out
 
 
-def validate_folder(folder, tol: Tolerances = Tolerances(), simulate: bool = True, sim_options=None,
+def validate_folder(folder, tol: Tolerances | None = None, simulate: bool = True, sim_options=None,
                     seed: int = 0, fixed_base: bool | None = None) -> tuple[Report, dict]:
     """Validate the object folder ``folder``.
 
     Parameters
     ----------
     folder : path
-    tol : Tolerances
+    tol : Tolerances, optional
+        Default: :class:`Tolerances` (metres) for artipg's own exports checked on
+        their exact primitives; :func:`relative_tolerances` of the object's
+        bounding-box diagonal for any other folder (third-party objects are often
+        unitless: PartNet-Mobility normalises them to a diagonal of about 2).
     simulate : bool
         Run the pybullet / MuJoCo checks on the URDF.
     sim_options : artipg.validate.sim.SimOptions, optional
@@ -99,10 +107,15 @@ def validate_folder(folder, tol: Tolerances = Tolerances(), simulate: bool = Tru
     if obj is not None:
         from artipg.validate.api import check_object
 
+        tol = tol or Tolerances()
         report = check_object(obj, tol)
         meta.update(geometry="exact", category=obj.category, seed=int(obj.seed))
     else:
         kin, pieces = load_urdf_geometry(urdf, np.random.default_rng([seed, 0x6E0]))
+        diag = rest_diagonal(kin, pieces)
+        tol = tol or relative_tolerances(diag)
+        pieces.sign_floor = tol.penetration  # shallower than this, the sign changes no verdict
+        meta["diagonal"] = diag
         report = Report(run_checks(kin, pieces, tol), tol.to_json())
     if fixed_base is None:
         fixed_base = annotated_fixed_base(folder / "annotation.json")
@@ -112,6 +125,30 @@ def validate_folder(folder, tol: Tolerances = Tolerances(), simulate: bool = Tru
 
         report.checks["simulator"] = simulate_urdf(urdf, sim_options or SimOptions(), fixed_base)
     return report, meta
+
+
+#: Tolerances of folders checked on their meshes, per unit of the object's
+#: bounding-box diagonal at rest: the metric defaults of a 1 m object (1 mm
+#: penetration, 2 mm gap), calibrated on the PartNet-Mobility development split
+#: (see docs/validation.md).
+RELATIVE_PENETRATION = 2.5e-3
+RELATIVE_FLOATING = 2.5e-3
+
+
+def relative_tolerances(diagonal: float) -> Tolerances:
+    """:class:`Tolerances` for an object whose bounding-box diagonal at rest is
+    ``diagonal`` (in its own units): :data:`RELATIVE_PENETRATION` and
+    :data:`RELATIVE_FLOATING` times it."""
+    return Tolerances(penetration=RELATIVE_PENETRATION * diagonal, floating=RELATIVE_FLOATING * diagonal)
+
+
+def rest_diagonal(kin: Kinematics, pieces) -> float:
+    """Diagonal of the bounding box of all pieces at rest (object units)."""
+    from artipg.validate.contacts import world_boxes
+
+    W0 = kin.poses()[pieces.link] @ pieces.T
+    c, h = world_boxes(pieces, W0)
+    return float(np.linalg.norm((c + h).max(axis=0) - (c - h).min(axis=0)))
 
 
 def annotated_fixed_base(annotation: Path) -> bool:
@@ -211,7 +248,7 @@ def _urdf_kinematics(robot) -> tuple[Kinematics, dict]:
     return Kinematics(order, parent, jn, jt, origin, axis, limits), idx
 
 
-def load_urdf_geometry(urdf, rng: np.random.Generator) -> tuple[Kinematics, Pieces]:
+def load_urdf_geometry(urdf, rng: np.random.Generator) -> tuple[Kinematics, MeshPieces]:
     """Kinematics and visual geometry pieces of a URDF file (see module docstring)."""
     import trimesh
 
@@ -242,9 +279,11 @@ def load_urdf_geometry(urdf, rng: np.random.Generator) -> tuple[Kinematics, Piec
                 m = trimesh.load(str(path), force="mesh", process=False)
                 if g.mesh.scale is not None:
                     m.apply_scale(np.broadcast_to(np.asarray(g.mesh.scale, dtype=float), (3,)))
-                parts = m.split(only_watertight=False)
-                if not 1 < len(parts) <= MAX_COMPONENTS or not all(p.is_watertight for p in parts):
-                    parts = [m]
+                parts = [m]
+                if len(m.faces) and 1 < _n_components(m) <= MAX_COMPONENTS:  # labels first: split is costly
+                    parts = m.split(only_watertight=False)
+                    if not all(p.is_watertight for p in parts):
+                        parts = [m]
                 for piece in parts:
                     box = _as_box(piece)
                     if box is not None:  # boxes get the exact box-box tests
@@ -272,7 +311,15 @@ def load_urdf_geometry(urdf, rng: np.random.Generator) -> tuple[Kinematics, Piec
         mesh_map[i] = m
         b = m.bounds
         center[i], half[i] = 0.5 * (b[0] + b[1]), 0.5 * (b[1] - b[0])
-    return kin, Pieces(link, part, Ts, center, half, geom, params, part_names, np.array(part_link), rng, mesh_map)
+    return kin, MeshPieces(link, part, Ts, center, half, geom, params, part_names, np.array(part_link), rng, mesh_map)
+
+
+def _n_components(mesh) -> int:
+    """Number of face-connected components of ``mesh``."""
+    import trimesh
+
+    labels = trimesh.graph.connected_component_labels(mesh.face_adjacency, node_count=len(mesh.faces))
+    return int(labels.max()) + 1 if len(labels) else 0
 
 
 def _as_box(mesh):
