@@ -117,13 +117,26 @@ def validate_folder(folder, tol: Tolerances | None = None, simulate: bool = True
         pieces.sign_floor = tol.penetration  # shallower than this, the sign changes no verdict
         meta["diagonal"] = diag
         report = Report(run_checks(kin, pieces, tol), tol.to_json())
+        floor_z = rest_floor(kin, pieces)
     if fixed_base is None:
         fixed_base = annotated_fixed_base(folder / "annotation.json")
     meta["fixed_base"] = bool(fixed_base)
     if simulate:
         from artipg.validate.sim import SimOptions, simulate_urdf
 
-        report.checks["simulator"] = simulate_urdf(urdf, sim_options or SimOptions(), fixed_base)
+        opts = sim_options or SimOptions()
+        if obj is not None:
+            report.checks["simulator"] = simulate_urdf(urdf, opts, fixed_base)
+        else:  # third-party: on the floor, flat collision meshes left out, tolerances scaled
+            import tempfile
+
+            from artipg.validate import third_party
+
+            if sim_options is None:
+                opts = third_party.sim_options(opts, tol.penetration / Tolerances().penetration)
+            with tempfile.TemporaryDirectory(prefix="artipg-tp-") as tmp:
+                copy = third_party.prepared_urdf(urdf, floor_z, Path(tmp) / urdf.name)
+                report.checks["simulator"] = simulate_urdf(copy, opts, fixed_base)
     return report, meta
 
 
@@ -149,6 +162,14 @@ def rest_diagonal(kin: Kinematics, pieces) -> float:
     W0 = kin.poses()[pieces.link] @ pieces.T
     c, h = world_boxes(pieces, W0)
     return float(np.linalg.norm((c + h).max(axis=0) - (c - h).min(axis=0)))
+
+
+def rest_floor(kin: Kinematics, pieces) -> float:
+    """Height (object units) of the lowest point of the pieces' boxes at rest."""
+    from artipg.validate.contacts import world_boxes
+
+    c, h = world_boxes(pieces, kin.poses()[pieces.link] @ pieces.T)
+    return float((c - h)[:, 2].min())
 
 
 def annotated_fixed_base(annotation: Path) -> bool:
