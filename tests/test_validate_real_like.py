@@ -211,6 +211,16 @@ def test_a_crash_a_hang_and_an_error_fail_only_their_item():
     assert all("seconds" in r for r in out)
 
 
+def test_an_interrupted_run_returns_what_it_has():
+    def stop(i, r):
+        raise KeyboardInterrupt
+
+    with pytest.raises(KeyboardInterrupt) as e:
+        run_isolated(_flaky, ["a", "b", "c"], workers=1, timeout=30.0, on_result=stop)
+    out = e.value.results
+    assert out[0]["value"] == "a" and [r["error"] for r in out[1:]] == ["interrupted", "interrupted"]
+
+
 def test_cli_reports_every_folder_even_broken_ones(cabinets, tmp_path):
     from artipg.cli import app
 

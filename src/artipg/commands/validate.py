@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import signal
 import time
 from pathlib import Path
 from typing import List, Optional
@@ -93,6 +94,7 @@ def register(app: typer.Typer) -> None:
         sim: bool = typer.Option(True, "--sim/--no-sim", help="Run the pybullet / MuJoCo checks."),
         workers: int = typer.Option(1, "--workers", "-j", help="Worker processes."),
         timeout: float = typer.Option(300.0, "--timeout", help="Seconds one object may take (its failure after)."),
+        quiet: bool = typer.Option(False, "--quiet", "-q", help="No progress line per object (on stderr)."),
         issues: bool = typer.Option(False, "--issues", help="Print every issue under the table."),
         fixed_base: Optional[bool] = typer.Option(
             None, "--fixed-base/--free-base",
@@ -117,10 +119,24 @@ def register(app: typer.Typer) -> None:
 
         t0 = time.perf_counter()
         interrupted = False
+        n_done = [0]
+
+        def progress(i: int, r: dict) -> None:
+            n_done[0] += 1
+            state = "ok" if r.get("ok") else "FAIL"
+            err_console.print(f"[{n_done[0]}/{len(tasks)}] {tasks[i][0]}: {state} ({r.get('seconds', 0.0):.1f} s)",
+                              soft_wrap=True, highlight=False, markup=False)
+
+        def stop(signum, frame):  # a terminated run reports like an interrupted one
+            raise KeyboardInterrupt
+
+        old_term = signal.signal(signal.SIGTERM, stop)
         try:
-            results = run_isolated(_validate_one, tasks, workers, timeout)
+            results = run_isolated(_validate_one, tasks, workers, timeout, on_result=None if quiet else progress)
         except KeyboardInterrupt as e:  # still report what was done
             results, interrupted = e.results, True
+        finally:
+            signal.signal(signal.SIGTERM, old_term)
         results = [_as_result(r) for r in results]
         timing = _timing(results, time.perf_counter() - t0, workers)
         console.print(_table(results))

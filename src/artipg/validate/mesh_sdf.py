@@ -103,14 +103,14 @@ class MeshSDF:
         return np.where(inside, -dmin, dmin)
 
 
-@numba.njit(cache=True, parallel=True, fastmath=False)
+@numba.njit(cache=True)
 def winding_number(triangles: np.ndarray, x: np.ndarray) -> np.ndarray:
     """Generalised winding number (n,) of points ``x`` (n, 3) with respect to the
     triangles (F, 3, 3): the signed solid angle they subtend over 4 pi (Van Oosterom
     and Strackee's formula); 1 inside a closed outward mesh, 0 outside."""
     n, F = x.shape[0], triangles.shape[0]
     out = np.empty(n)
-    for i in numba.prange(n):
+    for i in range(n):
         total = 0.0
         for f in range(F):
             ax = triangles[f, 0, 0] - x[i, 0]
