@@ -111,27 +111,28 @@ def test_cabinet_with_clearance_passes_and_planted_faults_fail(cabinets, name, t
         assert report.ok, [i.to_json() for c in report.checks.values() for i in c.issues]
     else:
         assert want in _failed(report)
-    if name == "handle floating":
+    if name == "handle floating":  # a handle on a fixed joint is a part of the door's rigid body
         (issue,) = report.checks["floating"].issues
-        assert issue.kind == "floating_link" and issue.links == ["door_handle"]
+        assert issue.kind == "floating_part" and issue.links == ["door"] and issue.parts == ["door_handle_visual0"]
         assert issue.amount == pytest.approx(0.02, abs=1e-6)
     if name == "door axis flipped":
         sweep = [i for i in report.checks["joint_sweep"].issues if i.kind == "sweep_penetration"]
         assert sweep and {i.joint for i in sweep} == {"door_hinge"}
     if name == "drawer too wide":
-        assert all(set(i.links) == {"body", "drawer"} for i in report.checks["penetration"].issues)
+        assert all(set(i.links) == {"base", "drawer"} for i in report.checks["penetration"].issues)  # body: fixed to base
 
 
 def test_clearance_is_a_gap_that_only_the_hinge_and_slide_bridge(cabinets):
     """Without the joints' anchoring the door and drawer would float: the 3 mm gap is
-    wider than the metric floating tolerance, and a door on a fixed joint floats."""
+    wider than the metric floating tolerance, and a door fixed to the carcass (one
+    rigid body) is a part that floats with its handle."""
     text = (cabinets["clean"] / "mobility.urdf").read_text()
     text = text.replace('name="door_hinge" type="revolute"', 'name="door_hinge" type="fixed"')
     folder = _write(cabinets["clean"].parent / "door_fixed", text)
     report, _ = validate_folder(folder, tol=Tolerances(), simulate=False)
     (issue,) = report.checks["floating"].issues
-    assert issue.kind == "floating_link" and "door" in issue.links
-    assert issue.amount == pytest.approx(C, abs=1e-6)
+    assert issue.kind == "floating_part" and issue.links == ["base"]  # the door is now the carcass's part
+    assert issue.parts == ["door_visual0", "door_handle_visual0"] and issue.amount == pytest.approx(C, abs=1e-6)
 
 
 def test_hinge_far_from_the_carcass_does_not_hold_the_door(cabinets):
@@ -165,7 +166,7 @@ def test_relative_tolerances_scale_with_the_object(cabinets):
 
 # ---------------------------------------------------------------- mesh distances
 
-def test_mesh_sdf_matches_a_sphere_and_reads_open_meshes_by_winding():
+def test_mesh_sdf_matches_a_sphere_and_treats_open_meshes_as_shells():
     import trimesh
 
     from artipg.validate.mesh_sdf import MeshSDF
@@ -176,18 +177,16 @@ def test_mesh_sdf_matches_a_sphere_and_reads_open_meshes_by_winding():
     x = rng.uniform(-1, 1, (500, 3))
     want = np.linalg.norm(x, axis=1) - 0.5
     assert np.abs(f(x) - want).max() < 5e-3  # the facets' sag at subdivision 4
-    # an open cup (a box without its top): above its mouth is outside, in it inside
+    # a closed box: inside is negative
     box = trimesh.creation.box((1.0, 1.0, 1.0))
+    assert MeshSDF(box.vertices, box.faces).closed
+    assert MeshSDF(box.vertices, box.faces)(np.array([[0.0, 0.0, 0.3]]))[0] == pytest.approx(-0.2, abs=1e-9)
+    # an open cup (the box without its top) is a shell: unsigned everywhere
     keep = box.face_normals[:, 2] < 0.5
     cup = MeshSDF(box.vertices, box.faces[keep])
     assert not cup.closed
-    d = cup(np.array([[0.0, 0.0, 0.6], [0.0, 0.0, 0.0], [0.0, 0.0, -0.7]]))
-    assert d[0] == pytest.approx(math.sqrt(0.26), abs=1e-9) and d[1] < -0.4 and d[2] == pytest.approx(0.2, abs=1e-9)
-    # behind a single open panel is outside
-    panel = trimesh.creation.box((1.0, 1.0, 1.0))
-    top = panel.face_normals[:, 2] > 0.5
-    p = MeshSDF(panel.vertices, panel.faces[top])
-    assert p(np.array([[0.0, 0.0, 0.3]]))[0] == pytest.approx(0.2, abs=1e-9)
+    d = cup(np.array([[0.0, 0.0, 0.6], [0.0, 0.0, 0.3], [0.0, 0.0, -0.7]]))
+    assert d == pytest.approx([math.sqrt(0.26), 0.5, 0.2], abs=1e-9)
 
 
 # ---------------------------------------------------------------- isolation and the CLI

@@ -8,10 +8,10 @@ meshes, and possibly an artipg ``annotation.json``. The geometric checks run on
   joints (the folder is then an untouched artipg export);
 - otherwise the URDF's visual geometry: meshes loaded with trimesh (each visual
   element is a part; an artipg link mesh is split back into its closed
-  components), boxes, cylinders and spheres as exact primitives. Mesh signed
-  distances take their sign from ray tests, which is only reliable for closed
-  meshes (PartNet-Mobility meshes often are not; treat their penetration numbers
-  as estimates).
+  components), boxes, cylinders and spheres as exact primitives. Links on fixed
+  joints are parts of their parent's rigid body (:func:`rigid_bodies`). Mesh
+  distances come from :mod:`artipg.validate.mesh_sdf`: penetration depths into
+  closed meshes, open meshes (most PartNet-Mobility parts) as shells.
 
 The simulator checks always run on the URDF file itself.
 """
@@ -114,7 +114,6 @@ def validate_folder(folder, tol: Tolerances | None = None, simulate: bool = True
         kin, pieces = load_urdf_geometry(urdf, np.random.default_rng([seed, 0x6E0]))
         diag = rest_diagonal(kin, pieces)
         tol = tol or relative_tolerances(diag)
-        pieces.sign_floor = tol.penetration  # shallower than this, the sign changes no verdict
         meta["diagonal"] = diag
         report = Report(run_checks(kin, pieces, tol), tol.to_json())
         floor_z = rest_floor(kin, pieces)
@@ -279,11 +278,12 @@ def load_urdf_geometry(urdf, rng: np.random.Generator) -> tuple[Kinematics, Mesh
     urdf = Path(urdf)
     robot = _load_robot(urdf)
     kin, idx = _urdf_kinematics(robot)
+    body, moved = rigid_bodies(kin)
     prims, meshes, part_names, part_link = [], [], [], []
     for link in robot.links:
-        li = idx[link.name]
+        li = body[idx[link.name]]
         for k, vis in enumerate(link.visuals):
-            T = vis.origin if vis.origin is not None else np.eye(4)
+            T = moved[idx[link.name]] @ (vis.origin if vis.origin is not None else np.eye(4))
             g = vis.geometry
             pi = len(part_names)
             part_names.append(vis.name or f"{link.name}_visual{k}")
@@ -333,6 +333,31 @@ def load_urdf_geometry(urdf, rng: np.random.Generator) -> tuple[Kinematics, Mesh
         b = m.bounds
         center[i], half[i] = 0.5 * (b[0] + b[1]), 0.5 * (b[1] - b[0])
     return kin, MeshPieces(link, part, Ts, center, half, geom, params, part_names, np.array(part_link), rng, mesh_map)
+
+
+def rigid_bodies(kin: Kinematics) -> tuple[np.ndarray, np.ndarray]:
+    """The rigid body of every link: the link itself, or for a link on a fixed joint
+    the body of its parent (a handle fixed to its door is part of the door).
+
+    A third-party URDF's fixed joints join pieces of one rigid body (PartNet-Mobility
+    names them so, and the simulators merge them); its geometry is checked as that
+    body's parts, so a handle embedded in its door is its mounting, not a collision
+    between links, and a handle off its door is a floating part.
+
+    Returns
+    -------
+    body : (L,) int64
+        Link index of each link's rigid body (the root's is 0).
+    moved : (L, 4, 4) float64
+        Pose of each link in its body's frame at rest.
+    """
+    P = kin.poses()
+    body = np.arange(kin.n_links)
+    for i in range(1, kin.n_links):  # parents come first
+        if kin.joint_types[i] == "fixed":
+            body[i] = body[kin.parent[i]]
+    moved = np.linalg.inv(P[body]) @ P
+    return body, moved
 
 
 def _n_components(mesh) -> int:

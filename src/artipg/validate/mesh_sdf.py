@@ -17,20 +17,16 @@ parts). Here each mesh is prepared once:
 - the sign is that of the offset from the closest point along the face normal
   (inside: negative); where several candidate faces tie (an edge or a corner), the
   face with the largest absolute offset decides, which is right at convex edges.
-  That only means "inside" for closed, outward-oriented meshes; on an open mesh (a
-  single panel, a bucket without a lid: most PartNet-Mobility parts) a point that
-  the normal calls inside is confirmed by its generalised winding number (the solid
-  angle the mesh subtends, over 4 pi; more than 1/2 in absolute value: inside), so
-  the back of a panel or the space above a cup is outside, and penetration depths
-  into open parts are measured only where the part encloses the point. Points
-  within ``sign_floor`` of an open part count as outside (the winding number
-  costs a pass over all faces per point): set it to the penetration tolerance,
-  below which the sign changes no verdict.
+  That only means "inside" for closed, outward-oriented meshes. An open mesh (a
+  single panel, a bucket without a lid, a shell with holes: most PartNet-Mobility
+  parts) encloses no material that the file defines, so it is treated as a shell:
+  its distance is unsigned, and penetration depths are measured only into closed
+  parts (a part crossing an open one reads as touching it). The winding number
+  would call the inside of a cup "inside" and a lid resting in it 1 unit deep.
 """
 
 from __future__ import annotations
 
-import numba
 import numpy as np
 
 from artipg.validate.shapes import Pieces
@@ -51,11 +47,9 @@ class MeshSDF:
     ----------
     vertices : (V, 3) float64
     faces : (F, 3) int64
-    sign_floor : float
-        Distance (mesh units) below which points near an open mesh count as outside.
     """
 
-    def __init__(self, vertices: np.ndarray, faces: np.ndarray, sign_floor: float = 0.0):
+    def __init__(self, vertices: np.ndarray, faces: np.ndarray):
         import trimesh
         from scipy.spatial import cKDTree
 
@@ -63,7 +57,6 @@ class MeshSDF:
         f = np.asarray(faces, dtype=np.int64)
         diag = float(np.linalg.norm(v.max(axis=0) - v.min(axis=0))) if len(v) else 0.0
         self.scale = max(diag, 1e-12)
-        self.sign_floor = float(sign_floor)
         if len(f):
             v, f = trimesh.remesh.subdivide_to_size(v, f, max_edge=EDGE_FRACTION * self.scale, max_iter=8)
         tri = v[f]
@@ -74,7 +67,6 @@ class MeshSDF:
         self.normals = n[keep] / norm[keep, None]
         self.tree = cKDTree(self.triangles.mean(axis=1)) if len(self.triangles) else None
         self.closed = bool(trimesh.Trimesh(vertices, faces, process=True).is_watertight) if len(f) else False
-        self._raw = np.asarray(vertices, dtype=float)[np.asarray(faces, dtype=np.int64)] if len(f) else None
 
     def __call__(self, x: np.ndarray) -> np.ndarray:
         """Signed distance (n,) of points ``x`` (n, 3), mesh frame, negative inside."""
@@ -94,53 +86,16 @@ class MeshSDF:
         dmin = dist.min(axis=1)
         tie = dist <= dmin[:, None] + _TIE * self.scale
         pick = np.where(tie, np.abs(along), -1.0).argmax(axis=1)
-        inside = along[np.arange(len(x)), pick] < 0.0
-        if not self.closed:
-            # nearer than the floor the sign changes nothing that a tolerance would see
-            inside &= dmin > self.sign_floor
-            idx = inside.nonzero()[0]
-            inside[idx] = np.abs(winding_number(self._raw, np.ascontiguousarray(x[idx]))) > 0.5
+        inside = (along[np.arange(len(x)), pick] < 0.0) & self.closed  # an open mesh is a shell
         return np.where(inside, -dmin, dmin)
-
-
-@numba.njit(cache=True)
-def winding_number(triangles: np.ndarray, x: np.ndarray) -> np.ndarray:
-    """Generalised winding number (n,) of points ``x`` (n, 3) with respect to the
-    triangles (F, 3, 3): the signed solid angle they subtend over 4 pi (Van Oosterom
-    and Strackee's formula); 1 inside a closed outward mesh, 0 outside."""
-    n, F = x.shape[0], triangles.shape[0]
-    out = np.empty(n)
-    for i in range(n):
-        total = 0.0
-        for f in range(F):
-            ax = triangles[f, 0, 0] - x[i, 0]
-            ay = triangles[f, 0, 1] - x[i, 1]
-            az = triangles[f, 0, 2] - x[i, 2]
-            bx = triangles[f, 1, 0] - x[i, 0]
-            by = triangles[f, 1, 1] - x[i, 1]
-            bz = triangles[f, 1, 2] - x[i, 2]
-            cx = triangles[f, 2, 0] - x[i, 0]
-            cy = triangles[f, 2, 1] - x[i, 1]
-            cz = triangles[f, 2, 2] - x[i, 2]
-            la = np.sqrt(ax * ax + ay * ay + az * az)
-            lb = np.sqrt(bx * bx + by * by + bz * bz)
-            lc = np.sqrt(cx * cx + cy * cy + cz * cz)
-            det = ax * (by * cz - bz * cy) + ay * (bz * cx - bx * cz) + az * (bx * cy - by * cx)
-            den = la * lb * lc + (ax * bx + ay * by + az * bz) * lc + (bx * cx + by * cy + bz * cz) * la \
-                + (cx * ax + cy * ay + cz * az) * lb
-            total += 2.0 * np.arctan2(det, den)
-        out[i] = total / (4.0 * np.pi)
-    return out
 
 
 class MeshPieces(Pieces):
     """:class:`Pieces` whose mesh pieces use :class:`MeshSDF` instead of trimesh's
-    ray-tested signed distance (primitive pieces are unchanged); ``sign_floor``
-    (keyword, object units) as in :class:`MeshSDF`."""
+    ray-tested signed distance (primitive pieces are unchanged)."""
 
-    def __init__(self, *args, sign_floor: float = 0.0, **kwargs):
+    def __init__(self, *args, **kwargs):
         super().__init__(*args, **kwargs)
-        self.sign_floor = float(sign_floor)
         self._mesh_sdf = {}
 
     def mesh_sdf(self, piece: int) -> MeshSDF:
@@ -148,7 +103,7 @@ class MeshPieces(Pieces):
         f = self._mesh_sdf.get(piece)
         if f is None:
             m = self.meshes[piece]
-            f = self._mesh_sdf[piece] = MeshSDF(m.vertices, m.faces, self.sign_floor)
+            f = self._mesh_sdf[piece] = MeshSDF(m.vertices, m.faces)
         return f
 
     def _sdf_pieces(self, g, k: int, r: np.ndarray, x: np.ndarray) -> np.ndarray:
