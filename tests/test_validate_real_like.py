@@ -181,6 +181,13 @@ def test_mesh_sdf_matches_a_sphere_and_treats_open_meshes_as_shells():
     box = trimesh.creation.box((1.0, 1.0, 1.0))
     assert MeshSDF(box.vertices, box.faces).closed
     assert MeshSDF(box.vertices, box.faces)(np.array([[0.0, 0.0, 0.3]]))[0] == pytest.approx(-0.2, abs=1e-9)
+    # a double-sided sheet is watertight but encloses nothing: a shell
+    sheet = trimesh.Trimesh([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]], [[0, 1, 2], [0, 2, 3], [0, 2, 1], [0, 3, 2]])
+    assert not MeshSDF(sheet.vertices, sheet.faces).closed
+    assert MeshSDF(sheet.vertices, sheet.faces)(np.array([[0.5, 0.5, -0.3]]))[0] == pytest.approx(0.3, abs=1e-9)
+    # an inward-oriented closed box reads the same as the outward one
+    inv = MeshSDF(box.vertices, box.faces[:, ::-1])
+    assert inv(np.array([[0.0, 0.0, 0.3], [0.0, 0.0, 0.9]])) == pytest.approx([-0.2, 0.4], abs=1e-9)
     # an open cup (the box without its top) is a shell: unsigned everywhere
     keep = box.face_normals[:, 2] < 0.5
     cup = MeshSDF(box.vertices, box.faces[keep])

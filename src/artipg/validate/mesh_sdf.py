@@ -17,7 +17,9 @@ parts). Here each mesh is prepared once:
 - the sign is that of the offset from the closest point along the face normal
   (inside: negative); where several candidate faces tie (an edge or a corner), the
   face with the largest absolute offset decides, which is right at convex edges.
-  That only means "inside" for closed, outward-oriented meshes. An open mesh (a
+  That only means "inside" for closed meshes (watertight, winding consistent,
+  enclosing a volume: a double-sided sheet does not; an inward-oriented one is
+  read with its normals turned). Any other mesh (a
   single panel, a bucket without a lid, a shell with holes: most PartNet-Mobility
   parts) encloses no material that the file defines, so it is treated as a shell:
   its distance is unsigned, and penetration depths are measured only into closed
@@ -36,6 +38,9 @@ K_NEAREST = 8
 #: Faces are subdivided until every edge is at most this fraction of the part's
 #: bounding-box diagonal.
 EDGE_FRACTION = 1.0 / 16.0
+#: A watertight mesh counts as closed when it encloses at least this fraction of
+#: the cube of its diagonal.
+CLOSED_VOLUME = 1e-6
 #: Distances within this (relative to the part's diagonal) count as ties for the sign.
 _TIE = 1e-9
 
@@ -57,6 +62,14 @@ class MeshSDF:
         f = np.asarray(faces, dtype=np.int64)
         diag = float(np.linalg.norm(v.max(axis=0) - v.min(axis=0))) if len(v) else 0.0
         self.scale = max(diag, 1e-12)
+        self.closed, flip = False, 1.0
+        if len(f):
+            whole = trimesh.Trimesh(vertices, faces, process=True)
+            # a double-sided sheet is watertight too, but encloses nothing
+            self.closed = bool(whole.is_watertight and whole.is_winding_consistent
+                               and abs(whole.volume) > CLOSED_VOLUME * self.scale ** 3)
+            if self.closed and whole.volume < 0:  # consistently inward: the normals say "out" the other way
+                flip = -1.0
         if len(f):
             v, f = trimesh.remesh.subdivide_to_size(v, f, max_edge=EDGE_FRACTION * self.scale, max_iter=8)
         tri = v[f]
@@ -64,9 +77,8 @@ class MeshSDF:
         norm = np.linalg.norm(n, axis=1)
         keep = norm > 1e-14 * self.scale ** 2  # degenerate faces have no normal
         self.triangles = tri[keep]
-        self.normals = n[keep] / norm[keep, None]
+        self.normals = n[keep] / norm[keep, None] * flip
         self.tree = cKDTree(self.triangles.mean(axis=1)) if len(self.triangles) else None
-        self.closed = bool(trimesh.Trimesh(vertices, faces, process=True).is_watertight) if len(f) else False
 
     def __call__(self, x: np.ndarray) -> np.ndarray:
         """Signed distance (n,) of points ``x`` (n, 3), mesh frame, negative inside."""
