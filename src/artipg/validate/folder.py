@@ -140,11 +140,12 @@ def validate_folder(folder, tol: Tolerances | None = None, simulate: bool = True
 
 
 #: Tolerances of folders checked on their meshes, per unit of the object's
-#: bounding-box diagonal at rest: the metric defaults of a 1 m object (1 mm
-#: penetration, 2 mm gap), calibrated on the PartNet-Mobility development split
-#: (see docs/validation.md).
+#: bounding-box diagonal at rest, calibrated on the PartNet-Mobility development
+#: split (see docs/validation.md): penetration 0.25 % (2.5 mm on a 1 m object, 5
+#: units/1000 at PartNet-Mobility's diagonal of 2), gaps 0.5 % (the pieces of one
+#: rigid body in those models stand up to that far apart without being detached).
 RELATIVE_PENETRATION = 2.5e-3
-RELATIVE_FLOATING = 2.5e-3
+RELATIVE_FLOATING = 5e-3
 
 
 def relative_tolerances(diagonal: float) -> Tolerances:
