@@ -14,17 +14,16 @@ parts). Here each mesh is prepared once:
   overestimates the distance by at most the circumradius of a face, and only when
   more than ``K`` faces crowd closer centroids (it does not happen on subdivided
   meshes with ``K = 8`` in practice);
-- the sign is that of the offset from the closest point along the face normal
-  (inside: negative); where several candidate faces tie (an edge or a corner), the
-  face with the largest absolute offset decides, which is right at convex edges.
-  That only means "inside" for closed meshes (watertight, winding consistent,
-  enclosing a volume: a double-sided sheet does not; an inward-oriented one is
-  read with its normals turned). Any other mesh (a
-  single panel, a bucket without a lid, a shell with holes: most PartNet-Mobility
-  parts) encloses no material that the file defines, so it is treated as a shell:
-  its distance is unsigned, and penetration depths are measured only into closed
-  parts (a part crossing an open one reads as touching it). The winding number
-  would call the inside of a cup "inside" and a lid resting in it 1 unit deep.
+- the sign comes from a ray test (``trimesh.Trimesh.contains``, embree) for closed
+  meshes only: watertight, winding consistent and enclosing a volume (a
+  double-sided sheet does not). (The sign of the offset along the nearest face's
+  normal, tried first, is wrong at some vertices.) Any other mesh (a single panel,
+  a bucket without a lid, a shell with holes: most PartNet-Mobility parts) encloses
+  no material that the file defines, so it is treated as a shell: its distance is
+  unsigned, and penetration depths are measured only into closed parts (a part
+  crossing an open one reads as touching it). The generalised winding number,
+  also tried, calls the inside of a cup "inside" and a lid resting in it 1 unit
+  deep.
 """
 
 from __future__ import annotations
@@ -41,8 +40,6 @@ EDGE_FRACTION = 1.0 / 16.0
 #: A watertight mesh counts as closed when it encloses at least this fraction of
 #: the cube of its diagonal.
 CLOSED_VOLUME = 1e-6
-#: Distances within this (relative to the part's diagonal) count as ties for the sign.
-_TIE = 1e-9
 
 
 class MeshSDF:
@@ -62,23 +59,23 @@ class MeshSDF:
         f = np.asarray(faces, dtype=np.int64)
         diag = float(np.linalg.norm(v.max(axis=0) - v.min(axis=0))) if len(v) else 0.0
         self.scale = max(diag, 1e-12)
-        self.closed, flip = False, 1.0
+        self._closed = None  # the processed mesh, for ray tests, when it is closed
         if len(f):
             whole = trimesh.Trimesh(vertices, faces, process=True)
             # a double-sided sheet is watertight too, but encloses nothing
-            self.closed = bool(whole.is_watertight and whole.is_winding_consistent
-                               and abs(whole.volume) > CLOSED_VOLUME * self.scale ** 3)
-            if self.closed and whole.volume < 0:  # consistently inward: the normals say "out" the other way
-                flip = -1.0
+            if whole.is_watertight and whole.is_winding_consistent and abs(whole.volume) > CLOSED_VOLUME * diag ** 3:
+                self._closed = whole
         if len(f):
             v, f = trimesh.remesh.subdivide_to_size(v, f, max_edge=EDGE_FRACTION * self.scale, max_iter=8)
         tri = v[f]
-        n = np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])
-        norm = np.linalg.norm(n, axis=1)
-        keep = norm > 1e-14 * self.scale ** 2  # degenerate faces have no normal
-        self.triangles = tri[keep]
-        self.normals = n[keep] / norm[keep, None] * flip
+        area2 = np.linalg.norm(np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0]), axis=1)
+        self.triangles = tri[area2 > 1e-14 * self.scale ** 2]  # degenerate faces: their edges are others'
         self.tree = cKDTree(self.triangles.mean(axis=1)) if len(self.triangles) else None
+
+    @property
+    def closed(self) -> bool:
+        """Whether the mesh is closed (distances inside are negative)."""
+        return self._closed is not None
 
     def __call__(self, x: np.ndarray) -> np.ndarray:
         """Signed distance (n,) of points ``x`` (n, 3), mesh frame, negative inside."""
@@ -90,16 +87,12 @@ class MeshSDF:
         k = min(K_NEAREST, len(self.triangles))
         _, cand = self.tree.query(x, k=k)
         cand = cand.reshape(len(x), k)
-        X = np.repeat(x, k, axis=0)
-        c = trimesh.triangles.closest_point(self.triangles[cand.ravel()], X).reshape(len(x), k, 3)
-        off = x[:, None, :] - c
-        dist = np.sqrt((off * off).sum(axis=2))
-        along = (off * self.normals[cand]).sum(axis=2)
-        dmin = dist.min(axis=1)
-        tie = dist <= dmin[:, None] + _TIE * self.scale
-        pick = np.where(tie, np.abs(along), -1.0).argmax(axis=1)
-        inside = (along[np.arange(len(x)), pick] < 0.0) & self.closed  # an open mesh is a shell
-        return np.where(inside, -dmin, dmin)
+        c = trimesh.triangles.closest_point(self.triangles[cand.ravel()], np.repeat(x, k, axis=0))
+        off = np.repeat(x, k, axis=0) - c
+        dmin = np.sqrt((off * off).sum(axis=1)).reshape(len(x), k).min(axis=1)
+        if self._closed is None:  # an open mesh is a shell
+            return dmin
+        return np.where(self._closed.contains(x), -dmin, dmin)
 
 
 class MeshPieces(Pieces):
