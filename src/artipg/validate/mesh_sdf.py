@@ -12,8 +12,8 @@ parts). Here each mesh is prepared once:
   the distance is the exact distance to the nearest of those
   (:func:`trimesh.triangles.closest_point`). Missing the true nearest face
   overestimates the distance by at most the circumradius of a face, and only when
-  more than ``K`` faces crowd closer centroids (it does not happen on subdivided
-  meshes with ``K = 8`` in practice);
+  more than ``K`` faces crowd closer centroids (on artipg's cabinet copied to
+  mesh form, the distances equalled trimesh's exact ones at every sample);
 - the sign comes from a ray test (``trimesh.Trimesh.contains``, embree) for closed
   meshes only: watertight, winding consistent and enclosing a volume (a
   double-sided sheet does not). (The sign of the offset along the nearest face's
