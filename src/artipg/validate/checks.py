@@ -237,11 +237,17 @@ def _floating(kin, pieces, W0, s, tol) -> CheckResult:
     split = split.tolist()
     if split:
         weight = np.bincount(pieces.part, weights=np.prod(2 * pieces.half, axis=1), minlength=P)
+        # parts touching another link hold their link's parts (a seat moved off its
+        # column floats, not the column that stands on the base)
+        cross = (pieces.link[a] != pieces.link[b]) & (D <= tol.floating)
+        touching = np.zeros(P, dtype=bool)
+        touching[pieces.part[a[cross]]] = True
+        touching[pieces.part[b[cross]]] = True
     for li in split:
         parts = ((pieces.part_link == li) & has_piece).nonzero()[0]
         cs = np.unique(pcomp[parts])
-        size = {c: weight[parts[pcomp[parts] == c]].sum() for c in cs}
-        main = max(cs, key=lambda c: (size[c], -c))
+        size = {c: (touching[parts[pcomp[parts] == c]].any(), weight[parts[pcomp[parts] == c]].sum()) for c in cs}
+        main = max(cs, key=lambda c: (*size[c], -c))
         for c in cs:
             if c == main:
                 continue

@@ -283,6 +283,9 @@ def load_urdf_geometry(urdf, rng: np.random.Generator) -> tuple[Kinematics, Mesh
             elif g.mesh is not None:
                 path = _mesh_path(urdf, g.mesh.filename)
                 m = trimesh.load(str(path), force="mesh", process=False)
+                # one vertex per position: texture and normal seams must not cut the
+                # surface into pieces (the component split below reads connectivity)
+                m.merge_vertices(merge_tex=True, merge_norm=True)
                 if g.mesh.scale is not None:
                     m.apply_scale(np.broadcast_to(np.asarray(g.mesh.scale, dtype=float), (3,)))
                 parts = [m]
