@@ -6,6 +6,12 @@ with vertex colours per semantic part (the colours of :func:`artipg.viz.palette`
 The node's extras hold its semantic label and the joint that moves it: ``type``,
 ``axis`` (joint frame), ``limits`` (rad or m; null when unlimited), ``parent``,
 ``child`` and ``name``.
+
+Materials (artipg's own objects, :attr:`artipg.export.asset.Asset.surfaces`): the
+meshes carry normals, texture coordinates and a glTF metallic-roughness material
+(:func:`pbr_material`; the texture image embedded), one mesh per material: a link's
+node holds its first material's mesh and child nodes ``<link>_visual<k>`` (identity
+transform) its further ones. Third-party folders keep vertex colours per semantic part.
 """
 
 from __future__ import annotations
@@ -47,17 +53,61 @@ def joint_extras(j) -> dict:
             "axis": [float(v) for v in j.axis], "limits": lim}
 
 
+def pbr_material(asset: Asset, pbr: dict):
+    """A ``trimesh`` PBR material of a material's PBR values (:meth:`Material.to_pbr`):
+    linear ``baseColorFactor`` with the opacity as alpha (blended when below 1),
+    metallic and roughness factors, and the texture image (sRGB) as base colour."""
+    import io
+
+    import trimesh
+    from PIL import Image
+
+    image = None
+    if pbr["texture"]:
+        image = Image.open(io.BytesIO(asset.file_bytes(pbr["texture"])))
+        image.load()
+    return trimesh.visual.material.PBRMaterial(
+        name=pbr["name"], baseColorFactor=[float(v) for v in pbr["baseColorFactor"]],
+        metallicFactor=pbr["metallic"], roughnessFactor=pbr["roughness"], baseColorTexture=image,
+        alphaMode="BLEND" if pbr["opacity"] < 1.0 else "OPAQUE", doubleSided=pbr["opacity"] < 1.0)
+
+
+def _surface_meshes(asset: Asset, surf, cache: dict) -> list:
+    """One textured ``trimesh.Trimesh`` per material group of a :class:`Surface`."""
+    import trimesh
+
+    out = []
+    for k, (pbr, _, _) in enumerate(surf.groups):
+        if pbr["name"] not in cache:
+            cache[pbr["name"]] = pbr_material(asset, pbr)
+        V, N, UV, F = surf.group(k)
+        mesh = trimesh.Trimesh(V, F, vertex_normals=N, process=False)
+        mesh.visual = trimesh.visual.TextureVisuals(uv=UV, material=cache[pbr["name"]])
+        out.append(mesh)
+    return out
+
+
 def build_scene(asset: Asset):
     """A ``trimesh.Scene`` of ``asset``: one node per link, parented as the joints."""
     import trimesh
 
     scene = trimesh.Scene(base_frame="world")
     joint_of = {j.child: j for j in asset.joints}
+    materials: dict = {}  # one material object per name: the GLB holds each once
     for lk in asset.links:
         j = joint_of.get(lk.name)
         parent = "world" if j is None else j.parent
         T = np.eye(4) if j is None else j.origin
         extras = {"semantic": lk.label, "joint": None if j is None else joint_extras(j)}
+        surf = asset.surfaces.get(lk.name)
+        if surf is not None:
+            meshes = _surface_meshes(asset, surf, materials)
+            scene.add_geometry(meshes[0], node_name=lk.name, geom_name=f"{lk.name}_visual", parent_node_name=parent,
+                               transform=T, metadata=extras)
+            for k, mesh in enumerate(meshes[1:], 1):
+                scene.add_geometry(mesh, node_name=f"{lk.name}_visual{k}", geom_name=f"{lk.name}_visual{k}",
+                                   parent_node_name=lk.name)
+            continue
         vm = asset.visual_mesh(lk)
         if vm is None:
             scene.graph.update(frame_from=parent, frame_to=lk.name, matrix=T, metadata=extras)
