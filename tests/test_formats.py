@@ -345,7 +345,7 @@ def test_mujoco_checks_catch_a_blocked_joint_and_a_tipping_object(out, tmp_path)
 
     src = folder(out, "storage_furniture", 0)
     front = float(model("storage_furniture", 0).bounds()[0, 0])
-    text = (src / "mobility.xml").read_text().replace('meshdir="."', f'meshdir="{src}"')
+    text = (src / "mobility.xml").read_text().replace('meshdir="."', f'meshdir="{src}" texturedir="{src}"')
     blocked = tmp_path / "blocked.xml"
     blocked.write_text(text.replace("<worldbody>", f'<worldbody><geom type="box" size="0.01 3 3" '
                                                    f'pos="{front - 0.012} 0 0"/>', 1))
