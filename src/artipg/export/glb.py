@@ -53,17 +53,18 @@ def joint_extras(j) -> dict:
             "axis": [float(v) for v in j.axis], "limits": lim}
 
 
-def pbr_material(asset: Asset, pbr: dict):
+def pbr_material(asset: Asset, pbr: dict, texture: bool = True):
     """A ``trimesh`` PBR material of a material's PBR values (:meth:`Material.to_pbr`):
     linear ``baseColorFactor`` with the opacity as alpha (blended when below 1),
-    metallic and roughness factors, and the texture image (sRGB) as base colour."""
+    metallic and roughness factors, and (``texture``) the texture image (sRGB) as
+    base colour."""
     import io
 
     import trimesh
     from PIL import Image
 
     image = None
-    if pbr["texture"]:
+    if texture and pbr["texture"]:
         image = Image.open(io.BytesIO(asset.file_bytes(pbr["texture"])))
         image.load()
     return trimesh.visual.material.PBRMaterial(
@@ -72,14 +73,15 @@ def pbr_material(asset: Asset, pbr: dict):
         alphaMode="BLEND" if pbr["opacity"] < 1.0 else "OPAQUE", doubleSided=pbr["opacity"] < 1.0)
 
 
-def _surface_meshes(asset: Asset, surf, cache: dict) -> list:
-    """One textured ``trimesh.Trimesh`` per material group of a :class:`Surface`."""
+def _surface_meshes(asset: Asset, surf, cache: dict, textures: bool) -> list:
+    """One ``trimesh.Trimesh`` with UVs and a PBR material per material group of a
+    :class:`Surface` (texture images left out unless ``textures``)."""
     import trimesh
 
     out = []
     for k, (pbr, _, _) in enumerate(surf.groups):
         if pbr["name"] not in cache:
-            cache[pbr["name"]] = pbr_material(asset, pbr)
+            cache[pbr["name"]] = pbr_material(asset, pbr, textures)
         V, N, UV, F = surf.group(k)
         mesh = trimesh.Trimesh(V, F, vertex_normals=N, process=False)
         mesh.visual = trimesh.visual.TextureVisuals(uv=UV, material=cache[pbr["name"]])
@@ -87,8 +89,9 @@ def _surface_meshes(asset: Asset, surf, cache: dict) -> list:
     return out
 
 
-def build_scene(asset: Asset):
-    """A ``trimesh.Scene`` of ``asset``: one node per link, parented as the joints."""
+def build_scene(asset: Asset, textures: bool = True):
+    """A ``trimesh.Scene`` of ``asset``: one node per link, parented as the joints
+    (``textures=False``: materials without their images, which :func:`glb_bytes` embeds)."""
     import trimesh
 
     scene = trimesh.Scene(base_frame="world")
@@ -101,7 +104,7 @@ def build_scene(asset: Asset):
         extras = {"semantic": lk.label, "joint": None if j is None else joint_extras(j)}
         surf = asset.surfaces.get(lk.name)
         if surf is not None:
-            meshes = _surface_meshes(asset, surf, materials)
+            meshes = _surface_meshes(asset, surf, materials, textures)
             scene.add_geometry(meshes[0], node_name=lk.name, geom_name=f"{lk.name}_visual", parent_node_name=parent,
                                transform=T, metadata=extras)
             for k, mesh in enumerate(meshes[1:], 1):
@@ -120,5 +123,49 @@ def build_scene(asset: Asset):
 
 
 def glb_bytes(asset: Asset) -> bytes:
-    """The bytes of ``mobility.glb`` of ``asset``."""
-    return build_scene(asset).export(file_type="glb")
+    """The bytes of ``mobility.glb`` of ``asset``, texture images embedded as the very
+    PNG files of the object folder."""
+    images = {pbr["name"]: asset.file_bytes(pbr["texture"]) for surf in asset.surfaces.values()
+              for pbr, _, _ in surf.groups if pbr["texture"]}
+    data = build_scene(asset, textures=False).export(file_type="glb")
+    return embed_textures(data, images) if images else data
+
+
+def embed_textures(glb: bytes, images: dict[str, bytes]) -> bytes:
+    """``glb`` with PNG ``images`` {material name: PNG bytes} as the base colour textures
+    of its materials of those names (repeating, read at ``TEXCOORD_0``).
+
+    trimesh would decode and encode every image again (most of the export time);
+    appending the files' own bytes keeps them byte for byte.
+    """
+    import json
+    import struct
+
+    n_json = struct.unpack_from("<I", glb, 12)[0]
+    tree = json.loads(glb[20:20 + n_json])
+    rest = glb[20 + n_json:]
+    binary = bytearray(rest[8:8 + struct.unpack_from("<I", rest, 0)[0]]) if rest else bytearray()
+    tree.setdefault("samplers", []).append({"wrapS": 10497, "wrapT": 10497})  # REPEAT: UVs count tiles
+    sampler = len(tree["samplers"]) - 1
+    done: dict[str, int] = {}
+    for mat in tree.get("materials", []):
+        png = images.get(mat.get("name"))
+        if png is None:
+            continue
+        if mat["name"] not in done:
+            binary.extend(b"\0" * (-len(binary) % 4))
+            tree.setdefault("bufferViews", []).append({"buffer": 0, "byteOffset": len(binary), "byteLength": len(png)})
+            binary.extend(png)
+            tree.setdefault("images", []).append({"bufferView": len(tree["bufferViews"]) - 1, "mimeType": "image/png"})
+            tree.setdefault("textures", []).append({"source": len(tree["images"]) - 1, "sampler": sampler})
+            done[mat["name"]] = len(tree["textures"]) - 1
+        mat.setdefault("pbrMetallicRoughness", {})["baseColorTexture"] = {"index": done[mat["name"]], "texCoord": 0}
+    binary.extend(b"\0" * (-len(binary) % 4))
+    if tree.get("buffers"):
+        tree["buffers"][0]["byteLength"] = len(binary)
+    else:
+        tree["buffers"] = [{"byteLength": len(binary)}]
+    text = json.dumps(tree, separators=(",", ":")).encode()
+    text += b" " * (-len(text) % 4)
+    body = struct.pack("<II", len(text), 0x4E4F534A) + text + struct.pack("<II", len(binary), 0x004E4942) + bytes(binary)
+    return struct.pack("<III", 0x46546C67, 2, 12 + len(body)) + body
