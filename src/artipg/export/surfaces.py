@@ -76,19 +76,21 @@ def mtl_materials(text: str, folder: str = "") -> dict[str, dict]:
 def obj_surface(text: str):
     """Vertices (V, 3), normals (V, 3), uvs (V, 2), faces (F, 3) and [(material name,
     first face, end face)] of OBJ ``text`` whose face corners are ``i/i/i`` (one index
-    for position, texture and normal, as artipg writes them); None for other OBJ files."""
-    v, vt, vn, f, groups = [], [], [], [], []
-    for ln in text.splitlines():
-        if ln.startswith("v "):
-            v.append(ln[2:])
-        elif ln.startswith("vt "):
-            vt.append(ln[3:])
-        elif ln.startswith("vn "):
-            vn.append(ln[3:])
-        elif ln.startswith("f "):
-            f.append(ln[2:])
-        elif ln.startswith("usemtl "):
-            groups.append([ln[7:].strip(), len(f)])
+    for position, texture and normal) and all ``v``, ``vt``, ``vn`` lines before the first
+``usemtl``, as artipg writes them; None for other OBJ files."""
+    import re
+
+    chunks = text.split("\nusemtl ")
+    head = "\n" + chunks[0]  # artipg writes every v, vt and vn line before the first usemtl
+    if len(chunks) < 2 or "\nf " in head:
+        return None  # faces before any material
+    f, groups = [], []
+    for chunk in chunks[1:]:
+        name, _, body = chunk.partition("\n")
+        faces = re.findall(r"^f (.*)$", body, re.M)
+        groups.append([name.strip(), len(f)])
+        f += faces
+    v, vt, vn = (re.findall(rf"^{key} (.*)$", head, re.M) for key in ("v", "vt", "vn"))
     try:
         V = np.array(" ".join(v).split(), dtype=float).reshape(-1, 3)
         UV = np.array(" ".join(vt).split(), dtype=float).reshape(-1, 2)
@@ -96,7 +98,7 @@ def obj_surface(text: str):
         idx = np.array(" ".join(f).replace("/", " ").split(), dtype=np.int64).reshape(-1, 3, 3) - 1
     except ValueError:
         return None
-    if (not groups or groups[0][1] != 0 or len(UV) != len(V) or len(N) != len(V) or not len(idx)
+    if (len(UV) != len(V) or len(N) != len(V) or not len(idx)
             or np.any(idx != idx[:, :, :1]) or idx.min() < 0 or idx.max() >= len(V)):
         return None
     ends = [g[1] for g in groups[1:]] + [len(idx)]
