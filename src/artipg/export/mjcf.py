@@ -64,10 +64,11 @@ def _f(v) -> str:
     return " ".join(["%.9g"] * len(x)) % tuple(e + 0.0 for e in x)
 
 
-def _fm(v) -> str:
-    """Mesh numbers (vertices, normals, texture coordinates) with 7 significant digits."""
+def _fm(v, digits: int) -> str:
+    """Mesh numbers with ``digits`` significant digits (vertices 7, texture coordinates
+    5, normals 4: about what the OBJ files hold)."""
     x = np.asarray(v, dtype=float).ravel().tolist()
-    return " ".join(["%.7g"] * len(x)) % tuple(e + 0.0 for e in x)
+    return " ".join([f"%.{digits}g"] * len(x)) % tuple(e + 0.0 for e in x)
 
 
 def mat_to_quat(R: np.ndarray) -> np.ndarray:
@@ -191,8 +192,8 @@ def build_mjcf(asset: Asset, actuators: bool = False, mesh_prefix: str = "") -> 
                 name = f"{lk.name}_m{k}"
                 V, N, UV, F = surf.group(k)
                 # MuJoCo's images run top row first: v down, as its OBJ reader turns them
-                ET.SubElement(assets, "mesh", name=name, vertex=_fm(V), normal=_fm(N),
-                              texcoord=_fm(np.column_stack([UV[:, 0], 1.0 - UV[:, 1]])),
+                ET.SubElement(assets, "mesh", name=name, vertex=_fm(V, 7), normal=_fm(N, 4),
+                              texcoord=_fm(np.column_stack([UV[:, 0], 1.0 - UV[:, 1]]), 5),
                               face=" ".join(map(str, F.ravel().tolist())), inertia="shell")
                 ET.SubElement(body, "geom", {"name": f"{lk.name}_visual{k}", "class": "visual", "type": "mesh",
                                              "mesh": name, "material": material_name(pbr)})
