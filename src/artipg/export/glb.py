@@ -167,5 +167,6 @@ def embed_textures(glb: bytes, images: dict[str, bytes]) -> bytes:
         tree["buffers"] = [{"byteLength": len(binary)}]
     text = json.dumps(tree, separators=(",", ":")).encode()
     text += b" " * (-len(text) % 4)
-    body = struct.pack("<II", len(text), 0x4E4F534A) + text + struct.pack("<II", len(binary), 0x004E4942) + bytes(binary)
+    body = (struct.pack("<II", len(text), 0x4E4F534A) + text  # chunks "JSON" and "BIN\0"
+            + struct.pack("<II", len(binary), 0x004E4942) + bytes(binary))
     return struct.pack("<III", 0x46546C67, 2, 12 + len(body)) + body

@@ -73,36 +73,50 @@ def mtl_materials(text: str, folder: str = "") -> dict[str, dict]:
     return out
 
 
+def _numbers(block: str, prefix: str, width: int) -> np.ndarray:
+    """The numbers of ``block``, lines all starting with ``prefix`` and holding ``width``
+    numbers each, as an (n, width) array; ValueError for anything else."""
+    import warnings
+
+    lines = block.count("\n")
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # numpy warns where a token is not a number
+        x = np.fromstring(block.replace(prefix, " "), dtype=float, sep=" ")
+    if block.count(prefix) != lines or x.size != lines * width:
+        raise ValueError("not a block of numbers")
+    return x.reshape(-1, width)
+
+
 def obj_surface(text: str):
     """Vertices (V, 3), normals (V, 3), uvs (V, 2), faces (F, 3) and [(material name,
-    first face, end face)] of OBJ ``text`` whose face corners are ``i/i/i`` (one index
-    for position, texture and normal) and all ``v``, ``vt``, ``vn`` lines before the first
-``usemtl``, as artipg writes them; None for other OBJ files."""
-    import re
-
+    first face, end face)] of OBJ ``text`` as artipg writes them
+    (:func:`artipg.export.meshes.obj_surface_text`): ``mtllib``, then blocks of ``v``,
+    ``vt`` and ``vn`` lines, then ``usemtl`` groups of triangles whose corners are
+    ``i/i/i`` (one index for position, texture and normal); None for other OBJ files."""
     chunks = text.split("\nusemtl ")
-    head = "\n" + chunks[0]  # artipg writes every v, vt and vn line before the first usemtl
-    if len(chunks) < 2 or "\nf " in head:
-        return None  # faces before any material
-    f, groups = [], []
-    for chunk in chunks[1:]:
-        name, _, body = chunk.partition("\n")
-        faces = re.findall(r"^f (.*)$", body, re.M)
-        groups.append([name.strip(), len(f)])
-        f += faces
-    v, vt, vn = (re.findall(rf"^{key} (.*)$", head, re.M) for key in ("v", "vt", "vn"))
+    head = chunks[0] + "\n"
+    iv, ivt, ivn = head.find("\nv "), head.find("\nvt "), head.find("\nvn ")
+    if len(chunks) < 2 or not 0 <= iv < ivt < ivn:
+        return None
     try:
-        V = np.array(" ".join(v).split(), dtype=float).reshape(-1, 3)
-        UV = np.array(" ".join(vt).split(), dtype=float).reshape(-1, 2)
-        N = np.array(" ".join(vn).split(), dtype=float).reshape(-1, 3)
-        idx = np.array(" ".join(f).replace("/", " ").split(), dtype=np.int64).reshape(-1, 3, 3) - 1
+        V = _numbers(head[iv + 1:ivt + 1], "v ", 3)
+        UV = _numbers(head[ivt + 1:ivn + 1], "vt ", 2)
+        N = _numbers(head[ivn + 1:], "vn ", 3)
+        groups = []
+        for chunk in chunks[1:]:
+            name, _, body = chunk.partition("\n")
+            body = body if body.endswith("\n") else body + "\n"
+            idx = _numbers(body.replace("/", " "), "f ", 9) if body.strip() else np.zeros((0, 9))
+            groups.append((name.strip(), idx.astype(np.int64) - 1))
     except ValueError:
         return None
+    idx = np.concatenate([g[1] for g in groups]).reshape(-1, 3, 3)
     if (len(UV) != len(V) or len(N) != len(V) or not len(idx)
             or np.any(idx != idx[:, :, :1]) or idx.min() < 0 or idx.max() >= len(V)):
         return None
-    ends = [g[1] for g in groups[1:]] + [len(idx)]
-    return V, N, UV, idx[:, :, 0], [(name, a, b) for (name, a), b in zip(groups, ends) if b > a]
+    ends = np.cumsum([len(g[1]) for g in groups]).tolist()
+    starts = [0] + ends[:-1]
+    return V, N, UV, idx[:, :, 0], [(g[0], a, b) for g, a, b in zip(groups, starts, ends) if b > a]
 
 
 def _text(asset, rel: str, first_line: bool = False) -> str | None:
