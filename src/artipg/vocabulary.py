@@ -46,6 +46,7 @@ SEMANTIC_LABELS: tuple[str, ...] = (
     "nozzle",
     "lens",        # eyeglass lens
     "touchpad",    # laptop touchpad
+    "blade",       # scissor, plier, knife blade or jaw
 )
 
 LABEL_ID: dict[str, int] = {name: i for i, name in enumerate(SEMANTIC_LABELS)}
