@@ -9,24 +9,26 @@ Joint: the upper half turns about the screw (revolute, z), 0 = closed, opening
 0.75-1.1 rad (PartNet-Mobility scissors open 0.72-1.26 rad).
 Sizes (metres): office 0.17-0.21 long, kitchen 0.2-0.24, children's 0.12-0.14,
 pinking 0.21-0.24; blades 1.2-4 mm thick, handles 6-12 mm thick.
+Frame: blades point +y, handles -y (as PartNet-Mobility's scissors), the pivot on z.
 """
 
 from __future__ import annotations
 
 import math
 
-from artipg.geometry.transforms import translation
+from artipg.geometry.transforms import rot_z, translation
 from artipg.rules import Category, Slot
 from artipg.templates.cutters import HANDLES, HOLE_CLEAR, blade_half, handle, handle_size, screw
 
 # sub-category -> blade length, blade width at the pivot, blade thickness, tip, shank length, loop scale
 SUBS = {
-    "office": ((0.08, 0.1), (0.013, 0.017), (0.0015, 0.002), "pointed", (0.016, 0.026), 1.0),
-    "kitchen": ((0.09, 0.11), (0.018, 0.024), (0.002, 0.0028), "pointed", (0.02, 0.03), 1.1),
+    "office": ((0.085, 0.11), (0.013, 0.017), (0.0015, 0.002), "pointed", (0.016, 0.026), 1.0),
+    "kitchen": ((0.09, 0.12), (0.018, 0.024), (0.002, 0.0028), "pointed", (0.02, 0.03), 1.1),
     "children": ((0.045, 0.058), (0.011, 0.014), (0.0012, 0.0016), "round", (0.008, 0.014), 0.85),
     "pinking": ((0.09, 0.11), (0.02, 0.026), (0.003, 0.004), "pinking", (0.02, 0.03), 1.1),
 }
 GAP = 0.0006  # between the two blades' faces
+ALONG_Y = rot_z(math.pi / 2)  # halves are built along x; blades point +y as in PartNet-Mobility
 
 
 def halves(ctx):
@@ -60,8 +62,9 @@ def halves(ctx):
         if kind != "metal_loops":
             f = start + 0.0015 / math.hypot(*rim)
             rim = (f * rim[0], f * rim[1])
-        link.add(blade_half(q, hand, tip, Lb, wb, t, z0, hole if i == 1 else 0.0, rim), name=f"blade{i}")
-        link.add(handle(kind, loop, size, height, start, "hinge_handle" if i == 1 else "none"), name=f"handle{i}")
+        link.add(blade_half(q, hand, tip, Lb, wb, t, z0, hole if i == 1 else 0.0, rim), pose=ALONG_Y, name=f"blade{i}")
+        link.add(handle(kind, loop, size, height, start, "hinge_handle" if i == 1 else "none"), ALONG_Y,
+                 name=f"handle{i}")
     top = 2 * t + GAP + 0.0008
     root.add(screw(rs, top, rs + p.uniform("head", 0.0015, 0.003), p.uniform("head_height", 0.0008, 0.0015)))
 
