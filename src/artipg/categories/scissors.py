@@ -7,8 +7,8 @@ when closed; a pivot screw with a head holds the halves together. Children's
 scissors have round tips; pinking shears thick blades with a zigzag edge.
 Joint: the upper half turns about the screw (revolute, z), 0 = closed, opening
 0.75-1.1 rad (PartNet-Mobility scissors open 0.72-1.26 rad).
-Sizes (metres): office 0.17-0.21 long, kitchen 0.2-0.24, children's 0.12-0.14,
-pinking 0.21-0.24; blades 1.2-4 mm thick, handles 6-12 mm thick.
+Sizes (metres): office 0.15-0.2 long, kitchen 0.18-0.22, children's 0.1-0.13,
+pinking 0.18-0.22; blades 1.2-4 mm thick, handles 6-12 mm thick.
 Frame: blades point +y, handles -y (as PartNet-Mobility's scissors), the pivot on z.
 """
 
@@ -22,10 +22,10 @@ from artipg.templates.cutters import HANDLES, HOLE_CLEAR, blade_half, handle, ha
 
 # sub-category -> blade length, blade width at the pivot, blade thickness, tip, shank length, loop scale
 SUBS = {
-    "office": ((0.085, 0.11), (0.013, 0.017), (0.0015, 0.002), "pointed", (0.016, 0.026), 1.0),
-    "kitchen": ((0.09, 0.12), (0.018, 0.024), (0.002, 0.0028), "pointed", (0.02, 0.03), 1.1),
-    "children": ((0.045, 0.058), (0.011, 0.014), (0.0012, 0.0016), "round", (0.008, 0.014), 0.85),
-    "pinking": ((0.09, 0.11), (0.02, 0.026), (0.003, 0.004), "pinking", (0.02, 0.03), 1.1),
+    "office": ((0.085, 0.11), (0.013, 0.017), (0.0015, 0.002), "pointed", (0.03, 0.042), 1.0),
+    "kitchen": ((0.1, 0.12), (0.018, 0.024), (0.002, 0.0028), "pointed", (0.035, 0.05), 1.1),
+    "children": ((0.056, 0.068), (0.011, 0.014), (0.0012, 0.0016), "round", (0.014, 0.022), 0.85),
+    "pinking": ((0.1, 0.12), (0.02, 0.026), (0.003, 0.004), "pinking", (0.035, 0.05), 1.1),
 }
 GAP = 0.0006  # between the two blades' faces
 ALONG_Y = rot_z(math.pi / 2)  # halves are built along x; blades point +y as in PartNet-Mobility
