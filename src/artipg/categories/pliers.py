@@ -6,8 +6,8 @@ half-thickness plate round the pivot; a rivet through both plates. Locking plier
 carry an adjusting screw at the end of the fixed handle.
 Joint: the upper half turns about the rivet (revolute, z), 0 = jaws closed, opening
 0.35-0.7 rad (wider for needle-nose).
-Sizes (metres): slip-joint 0.15-0.25 long, needle-nose 0.14-0.2 (jaws 0.045-0.065),
-diagonal 0.13-0.2 (jaws 0.015-0.022), locking 0.18-0.26; 7-14 mm thick.
+Sizes (metres): slip-joint 0.15-0.22 long, needle-nose 0.15-0.2 (jaws 0.045-0.065),
+diagonal 0.13-0.18 (jaws 0.015-0.022), locking 0.18-0.25; 7-14 mm thick.
 Frame: jaws point +y, handles -y (as the scissors), the pivot on z.
 """
 
