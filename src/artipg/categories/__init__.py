@@ -9,11 +9,11 @@ from __future__ import annotations
 from artipg.categories import storage_furniture, eyeglasses, stapler, bottle, switch, bucket, microwave, faucet, kitchen_pot, kettle
 from artipg.categories import safe, box, laptop, door, window, trash_can
 from artipg.categories import table, chair, refrigerator, dishwasher, oven, washing_machine
-from artipg.categories import scissors, pliers
+from artipg.categories import scissors, pliers, knife
 
 _MODULES = (storage_furniture, eyeglasses, stapler, bottle, switch, bucket, microwave, faucet, kitchen_pot, kettle,
             safe, box, laptop, door, window, trash_can,
             table, chair, refrigerator, dishwasher, oven, washing_machine,
-            scissors, pliers)
+            scissors, pliers, knife)
 
 REGISTRY = {m.RULE.name: m.RULE for m in _MODULES}

@@ -53,11 +53,11 @@ def halves(ctx):
             link = ctx.builder.create_link("upper_half", root)
             link.set_joint("revolute", translation(), axis=(0.0, 0.0, -1.0), limits=(0.0, p.uniform("open", *up)))
         q = p.scope("lower" if i == 0 else "upper")
-        link.add(jaw(kind, hand, R0, Lj, w0, w1, T), ALONG_Y, name=f"jaw{i}")
-        link.add(pivot_plate(hand, R0, T, rp + PIN_CLEAR if i else 0.0, i == 0, (w0, g0, hw0)), ALONG_Y,
-                 name=f"plate{i}")
         link.add(handle(q, grip, (R0, Lh, g0, g1, hw0, hw1, bow), hand, Th, "hinge_handle" if i else "none"), ALONG_Y,
                  name=f"handle{i}")
+        link.add(pivot_plate(hand, R0, T, rp + PIN_CLEAR if i else 0.0, i == 0, (w0, g0, hw0)), ALONG_Y,
+                 name=f"plate{i}")
+        link.add(jaw(kind, hand, R0, Lj, w0, w1, T), ALONG_Y, name=f"jaw{i}")
     root.add(rivet(rp, T, rp + p.uniform("head", 0.0012, 0.0025), p.uniform("head_height", 0.0006, 0.0012)))
     if ctx.sub == "locking":
         root.add(adjust_screw(-R0 - Lh + 0.002, -(g1 + 0.5 * hw1), 0.4 * Th, p.uniform("screw_length", 0.012, 0.02), Th),
