@@ -32,6 +32,7 @@ from artipg.geometry.base import pick
 from artipg.geometry.box import Cuboid, RectRing
 from artipg.geometry.patches import sample_family
 from artipg.geometry.prism import Prism, TriPrism
+from artipg.geometry.extrusion import Extrusion
 from artipg.geometry.revolve import Frustum, Ring, Sphere, Torus
 
 #: Surface samples per square metre, and the per-component minimum / maximum.
@@ -268,14 +269,14 @@ def _torus_traits(pieces, rows, P):
 #: Geometry template -> its traits (see above). RectRing is absent: :meth:`Pieces.of`
 #: splits it into boxes.
 _TRAITS = {Cuboid: _box_traits, Frustum: _frustum_traits, Ring: _ring_traits, Sphere: _sphere_traits,
-           Torus: _torus_traits, Prism: _no_traits, TriPrism: _no_traits}
+           Torus: _torus_traits, Prism: _no_traits, TriPrism: _no_traits, Extrusion: _no_traits}
 
 
 def traits(geom):
     """The trait setter of geometry template ``geom``; ``ValueError`` for a template
     validation does not know."""
     try:
-        return _TRAITS[geom]
+        return _TRAITS[geom] if geom in _TRAITS else _TRAITS[type(geom)]  # family instances by their class
     except KeyError:
         raise ValueError(f"validation does not know geometry template {getattr(geom, '__name__', geom)!r}: "
                          "add its traits to artipg.validate.shapes._TRAITS") from None
