@@ -73,8 +73,8 @@ def register(app: typer.Typer) -> None:
         engine: str = typer.Option("local", "--engine", help="local (process pool) or ray (a Ray cluster; "
                                                             "see docs/cluster.md)."),
         address: str = typer.Option(None, "--address", show_default=False,
-                                    help="Ray cluster to join (HOST:PORT or auto) [default: a local Ray "
-                                         "instance with --workers CPUs]."),
+                                    help="Ray cluster to join, HOST:PORT or auto (without it: a local Ray "
+                                         "instance with --workers CPUs)."),
     ) -> None:
         """Generate objects into OUT/<category>/<seed>/ and index them in OUT/index.jsonl.
 
