@@ -35,8 +35,8 @@ def body(ctx):
     p, b = ctx.p, ctx.builder
     (n_lo, n_hi), dr, hr, sr, ir, _ = SUBS[ctx.sub]
     n = p.integers("slots", n_lo, n_hi)
-    D, H, s, side = p.uniform("depth", *dr), p.uniform("height", *hr), p.uniform("slot_width", 0.028, 0.04), \
-        p.uniform("side_wall", *sr)
+    D, H, s = p.uniform("depth", *dr), p.uniform("height", *hr), p.uniform("slot_width", 0.028, 0.04)
+    side = p.uniform("side_wall", *sr)
     wi = p.uniform("inner_wall", *ir)
     W = 2 * side + n * s + (n - 1) * wi
     slots = [(-W / 2 + side + i * (s + wi), -W / 2 + side + i * (s + wi) + s) for i in range(n)]
@@ -57,7 +57,8 @@ def body(ctx):
         travel = min(q.uniform("travel", 0.05, 0.09), z - zp - 0.015 - t / 2)
         sw, sh = q.uniform("stem_width", 0.004, 0.008), 0.7 * t
         levers.append((q, yc, z, travel, (sw, sh, t)))
-    wf_slots = [(yc, sw / 2 + GAP, z - travel - sh / 2 - GAP, z + sh / 2 + GAP) for _, yc, z, travel, (sw, sh, _) in levers]
+    wf_slots = [(yc, sw / 2 + GAP, z - travel - sh / 2 - GAP, z + sh / 2 + GAP)
+                for _, yc, z, travel, (sw, sh, _) in levers]
     root = b.create_link("body")
     if fh:
         root.add(bun_feet(p.scope("feet"), 0.9 * D, 0.9 * W, fh))
