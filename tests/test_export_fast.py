@@ -10,6 +10,7 @@ from __future__ import annotations
 import json
 import math
 import os
+import re
 import stat
 
 import numpy as np
@@ -140,32 +141,36 @@ def test_memoised_meshes_pieces_and_mass_match_direct_calls(objects):
                     assert vol == vol0 and _same(c, np.asarray(c0, float)) and _same(I, np.asarray(I0, float))
 
 
-def _plain_hull_files(link) -> dict[str, str]:
-    """Collision hull files of ``link`` as written when every primitive built its own
-    pieces: sectors of one primitive share a file, nothing else does."""
+def _plain_hull_texts(link) -> list[str | None]:
+    """OBJ text of each collision piece of ``link`` in order (None for native shapes),
+    from pieces every primitive builds afresh (no cache)."""
     pieces = [piece for part in link.parts for prim in part.primitives for piece in prim.geom.collision(prim.params)]
-    files, seen = {}, set()
-    for k, piece in enumerate(pieces):
-        if piece.shape == "mesh" and id(piece.vertices) not in seen:
-            seen.add(id(piece.vertices))
-            files[f"meshes/{link.name}_c{k}.obj"] = M.obj_text(piece.vertices, piece.faces)
-    return files
+    return [M.obj_text(p.vertices, p.faces) if p.shape == "mesh" else None for p in pieces]
 
 
-def test_repeated_primitives_still_write_one_hull_file_each():
-    """Equal primitives of a link share their cached pieces, yet each keeps its own hull
-    file (the handle ends of a drawer are equal tori)."""
-    repeated = 0
+def test_each_collision_element_loads_its_own_hull_and_no_file_is_repeated():
+    """Identical hulls (equal primitives of a link, or across links: the handle ends of
+    drawers are equal tori) share one file, yet every collision element still loads
+    the hull of its own piece, and no two hull files hold the same bytes."""
+    shared = 0
     for seed in range(4):
         obj = artipg.generate("storage_furniture", seed)
-        _, files = build_urdf(obj)
-        for link in obj.links:
-            keys = [(p.geom, p.params) for part in link.parts for p in part.primitives
-                    if p.geom.kind == "lathe"]
-            repeated += len(keys) - len(set(keys))
-            hulls = {k: v for k, v in files.items() if k.startswith(f"meshes/{link.name}_c")}
-            assert hulls == _plain_hull_files(link)
-    assert repeated  # the case this test is about did occur
+        robot, files = build_urdf(obj)
+        for link, el in zip(obj.links, robot.findall("link")):
+            expected = _plain_hull_texts(link)
+            cols = el.findall("collision")
+            assert len(cols) == len(expected)
+            for col, text in zip(cols, expected):
+                mesh = col.find("geometry/mesh")
+                assert (mesh is None) == (text is None)
+                if mesh is not None:
+                    assert files[mesh.get("filename")] == text
+        hulls = [v for k, v in files.items() if re.fullmatch(r"meshes/.*_c\d+\.obj", k)]
+        assert len(hulls) == len(set(hulls))
+        refs = [m.get("filename") for m in robot.iter("mesh") if "_c" in m.get("filename")]
+        shared += len(refs) - len(set(refs))
+        assert set(refs) == {k for k in files if re.fullmatch(r"meshes/.*_c\d+\.obj", k)}
+    assert shared  # the case this test is about did occur
 
 
 # ---------------------------------------------------------------- inertials

@@ -292,9 +292,13 @@ def test_glb_loads_as_one_node_per_link(out, category, seed):
     scene = trimesh.load(folder(out, category, seed) / "mobility.glb")
     assert isinstance(scene, trimesh.Scene)
     nodes = set(scene.graph.nodes) - {scene.graph.base_frame}
-    assert nodes == {lk.name for lk in obj.links}
+    links = {lk.name for lk in obj.links}
+    assert links <= nodes
     edges = scene.graph.transforms.edge_data
     parents = scene.graph.transforms.parents
+    for n in nodes - links:  # a link's further materials: child nodes at its frame
+        assert parents[n] in links and n.startswith(parents[n] + "_visual")
+        assert np.abs(edges[(parents[n], n)].get("matrix", np.eye(4)) - np.eye(4)).max() < 1e-12
     for j in obj.joints:
         assert parents[j.child] == j.parent
         data = edges[(j.parent, j.child)]
@@ -306,9 +310,9 @@ def test_glb_loads_as_one_node_per_link(out, category, seed):
     poses = obj.link_poses()
     for i, lk in enumerate(obj.links):
         assert np.abs(scene.graph.get(lk.name)[0] - poses[i]).max() < 1e-6
-    # vertex colours per semantic part
+    # PBR materials with texture coordinates (tests/test_material_formats.py checks their values)
     for name, geom in scene.geometry.items():
-        assert geom.visual.kind == "vertex"
+        assert geom.visual.kind == "texture"
 
 
 def test_formats_are_deterministic(tmp_path):
@@ -341,7 +345,7 @@ def test_mujoco_checks_catch_a_blocked_joint_and_a_tipping_object(out, tmp_path)
 
     src = folder(out, "storage_furniture", 0)
     front = float(model("storage_furniture", 0).bounds()[0, 0])
-    text = (src / "mobility.xml").read_text().replace('meshdir="."', f'meshdir="{src}"')
+    text = (src / "mobility.xml").read_text().replace('meshdir="."', f'meshdir="{src}" texturedir="{src}"')
     blocked = tmp_path / "blocked.xml"
     blocked.write_text(text.replace("<worldbody>", f'<worldbody><geom type="box" size="0.01 3 3" '
                                                    f'pos="{front - 0.012} 0 0"/>', 1))

@@ -295,7 +295,8 @@ def test_shipped_encoder_classifies_its_categories(encoder):
     known = [c for c in encoder.classes if c in CATEGORIES]
     assert len(known) >= 2
     for c in known:
-        pred = encoder.predict(clouds_of(c, range(20_000, 20_010)))
+        # 40 objects: with 10, one category's accuracy swings by 20 points between seed blocks
+        pred = encoder.predict(clouds_of(c, range(20_000, 20_040)))
         assert np.mean([p == c for p in pred]) >= 0.7, (c, pred)
 
 

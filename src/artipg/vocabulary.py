@@ -52,6 +52,7 @@ SEMANTIC_LABELS: tuple[str, ...] = (
     "refill",      # pen refill point, glue stick column
     "connector",   # USB plug, its sliding carriage
     "cover",       # swivel cover of a flash drive
+    "blade",       # scissor, plier, knife blade or jaw
 )
 
 LABEL_ID: dict[str, int] = {name: i for i, name in enumerate(SEMANTIC_LABELS)}

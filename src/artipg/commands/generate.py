@@ -70,6 +70,11 @@ def register(app: typer.Typer) -> None:
                                     help="Files beside the URDF, of urdf,mjcf,usd,glb [default: urdf,mjcf] "
                                          "(see docs/formats.md)."),
         actuators: bool = typer.Option(False, "--actuators", help="Position servos per joint in MJCF and USD."),
+        engine: str = typer.Option("local", "--engine", help="local (process pool) or ray (a Ray cluster; "
+                                                            "see docs/cluster.md)."),
+        address: str = typer.Option(None, "--address", show_default=False,
+                                    help="Ray cluster to join, HOST:PORT or auto (without it: a local Ray "
+                                         "instance with --workers CPUs)."),
     ) -> None:
         """Generate objects into OUT/<category>/<seed>/ and index them in OUT/index.jsonl.
 
@@ -92,6 +97,7 @@ def register(app: typer.Typer) -> None:
             fail(f"--workers must be at least 1, got {workers}")
         if shards < 0:
             fail(f"--shards must be >= 0, got {shards}")
+        _check_engine(engine, address)
         from artipg.export.formats import DEFAULT_FORMATS, parse_formats
 
         try:
@@ -105,7 +111,14 @@ def register(app: typer.Typer) -> None:
         tasks = [(c, s) for c in cats for s in range(seed, seed + n)]
         opts = BuildOptions(str(out), n_points=points, views=views, validate=validate, simulate=sim,
                             overwrite=overwrite, formats=fmts, actuators=actuators)
-        counts, errors, stopped = _run(tasks, opts, out, workers, quiet)
+        try:
+            counts, errors, stopped = _run(tasks, opts, out, workers, quiet, engine, address)
+        except RuntimeError as e:
+            from artipg.data.ray_engine import EngineError
+
+            if not isinstance(e, EngineError):
+                raise
+            fail(str(e))
         _summary(counts, errors, out, validate)
         if stopped:
             typer.echo(f"interrupted: {_written(counts)} written, re-run to resume", err=True)
@@ -148,7 +161,22 @@ def _written(counts: Counter) -> int:
     return counts["new"] + counts["rebuilt"] + counts["rewritten"]
 
 
-def _run(tasks: list, opts, out: Path, workers: int, quiet: bool) -> tuple[Counter, list[str], bool]:
+def _check_engine(engine: str, address: str | None) -> None:
+    from artipg.data.engine import ENGINES
+
+    if engine not in ENGINES:
+        fail(f"unknown engine {engine!r}; valid engines: {', '.join(ENGINES)}")
+    if address is not None and engine != "ray":
+        fail("--address needs --engine ray")
+    if engine == "ray":
+        from artipg.data.ray_engine import ray_available
+
+        if not ray_available():
+            fail("--engine ray needs Ray: pip install 'artipg[ray]'")
+
+
+def _run(tasks: list, opts, out: Path, workers: int, quiet: bool, engine: str = "local",
+         address: str | None = None) -> tuple[Counter, list[str], bool]:
     """Run the tasks with a progress display and the index kept as they finish;
     returns (outcome counts, "category/seed: error" lines, whether Ctrl-C stopped the run)."""
     from artipg.data.engine import run_tasks
@@ -175,7 +203,7 @@ def _run(tasks: list, opts, out: Path, workers: int, quiet: bool) -> tuple[Count
     try:
         with Progress(*columns, disable=quiet, transient=False) as bar, IndexAppender(out) as index:
             job = bar.add_task("generating", total=len(tasks), stats="")
-            for o in run_tasks(tasks, opts, workers=workers, stop=stop):
+            for o in run_tasks(tasks, opts, workers=workers, stop=stop, engine=engine, address=address):
                 counts[o.status] += 1
                 if o.status == "rebuilt":
                     counts[f"rebuilt:{o.reason}"] += 1

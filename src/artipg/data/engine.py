@@ -126,8 +126,12 @@ def _ignore_sigint() -> None:
     signal.signal(signal.SIGINT, signal.SIG_IGN)
 
 
+ENGINES = ("local", "ray")
+
+
 def run_tasks(tasks: Sequence[tuple[str, int]], opts: BuildOptions, workers: int = 1,
-              stop: threading.Event | None = None) -> Iterator[Outcome]:
+              stop: threading.Event | None = None, engine: str = "local",
+              address: str | None = None) -> Iterator[Outcome]:
     """Run ``tasks`` ((category, seed) pairs), yielding outcomes as objects finish.
 
     Parameters
@@ -141,11 +145,24 @@ def run_tasks(tasks: Sequence[tuple[str, int]], opts: BuildOptions, workers: int
     stop : threading.Event, optional
         Once set, no new object is started; objects already started are finished
         and yielded, so no folder is left half-written.
+    engine : {"local", "ray"}
+        ``"ray"`` runs the same tasks on a Ray cluster
+        (:func:`artipg.data.ray_engine.run_tasks_ray`; ``workers`` then sizes a local
+        Ray instance, started when ``address`` is None).
+    address : str, optional
+        Ray cluster address (``engine="ray"`` only).
 
     Yields
     ------
     Outcome
     """
+    if engine == "ray":
+        from artipg.data.ray_engine import run_tasks_ray
+
+        yield from run_tasks_ray(tasks, opts, address=address, workers=workers, stop=stop)
+        return
+    if engine != "local":
+        raise ValueError(f"unknown engine {engine!r}; valid engines: {', '.join(ENGINES)}")
     stopped = stop.is_set if stop is not None else (lambda: False)
     if workers <= 1:
         for category, seed in tasks:

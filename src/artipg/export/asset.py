@@ -108,13 +108,18 @@ class Asset:
     folder : Path or None
         The object folder that mesh paths are relative to.
     files : dict
-        {relative path: OBJ text} of meshes not (yet) on disk.
+        {relative path: OBJ or MTL text, or PNG bytes} of files not (yet) on disk.
     vertex_labels : dict
         {link name: [(label, vertex count), ...]} semantic labels of the runs of
         vertices of a link's visual mesh (else the link's ``label`` colours it all).
     excludes : list
         [(link, link)] pairs that must not collide besides parent and child (links of
         third-party meshes that overlap at rest).
+    surfaces : dict
+        {link name: :class:`artipg.export.surfaces.Surface`}: visual surfaces with
+        materials, read from the OBJ and MTL files of artipg's own objects
+        (:func:`artipg.export.surfaces.read_surfaces`); empty for third-party folders,
+        whose writers then colour the visual geoms by semantic label.
     """
 
     name: str
@@ -125,6 +130,7 @@ class Asset:
     files: dict = field(default_factory=dict)
     vertex_labels: dict = field(default_factory=dict)
     excludes: list = field(default_factory=list)
+    surfaces: dict = field(default_factory=dict)
 
     def link(self, name: str) -> LinkDesc:
         return self.links[[lk.name for lk in self.links].index(name)]
@@ -147,6 +153,13 @@ class Asset:
             m = trimesh.load(str(Path(self.folder) / rel), force="mesh", process=False)
             V, F = np.asarray(m.vertices, dtype=float), np.asarray(m.faces, dtype=np.int64)
         return V * np.asarray(scale, dtype=float), F
+
+    def file_bytes(self, rel: str) -> bytes:
+        """The bytes of file ``rel`` (relative to the object folder): held in memory or on disk."""
+        data = self.files.get(rel)
+        if data is not None:
+            return data if isinstance(data, bytes) else data.encode()
+        return (Path(self.folder) / rel).read_bytes()
 
     def visual_mesh(self, link: LinkDesc) -> tuple[np.ndarray, np.ndarray] | None:
         """All visual geoms of ``link`` as one mesh in the link frame, or None."""
@@ -291,8 +304,12 @@ def asset_from_urdf(robot, folder=None, files=None, fixed_base: bool = False, na
             joints.append(_joint(j, links[j.child], joint_damping))
     if len(order) != len(links):
         raise ValueError("the URDF's links do not form one tree")
-    return Asset(name or robot.name, [links[n] for n in order], joints, bool(fixed_base),
-                 None if folder is None else Path(folder), dict(files or {}))
+    from artipg.export.surfaces import read_surfaces
+
+    asset = Asset(name or robot.name, [links[n] for n in order], joints, bool(fixed_base),
+                  None if folder is None else Path(folder), dict(files or {}))
+    asset.surfaces = read_surfaces(asset)
+    return asset
 
 
 def _joint(j, child: LinkDesc, joint_damping) -> JointDesc:
@@ -320,7 +337,9 @@ def _joint(j, child: LinkDesc, joint_damping) -> JointDesc:
 
 def object_asset(obj, urdf_text: str, files: dict, sections: int = 24) -> Asset:
     """The :class:`Asset` of a generated object from its exported URDF text and
-    {relative path: OBJ text} meshes, with per-part semantic labels of the visuals."""
+    {relative path: OBJ or MTL text, or PNG bytes} files, with per-part semantic labels
+    of the visuals (its materials are read back from the OBJ and MTL files, as for a
+    converted folder, so both give the same bytes)."""
     from artipg.export.meshes import primitive_mesh_arrays
     from artipg.export.annotation import category_fixed_base
 

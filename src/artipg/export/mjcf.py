@@ -20,6 +20,13 @@ The body tree follows the URDF's links (body frame = link frame), with
 
 Mesh files are shared with the URDF (``meshes/`` or the folder's own). Convex
 hulls are capped at :data:`MAX_HULL_VERTICES` vertices, within MJX's limits.
+
+Materials (artipg's own objects, :attr:`artipg.export.asset.Asset.surfaces`): a
+``<texture type="2d">`` per texture image (``textures/*.png``, shared with the URDF)
+and a ``<material>`` per material (:func:`material_attributes`); a link's visual geom
+wears its material, and a link with several materials gets one visual geom per
+material, on an inline mesh of that material's faces (with normals and texture
+coordinates). Third-party folders keep one grey visual geom per URDF visual.
 """
 
 from __future__ import annotations
@@ -57,6 +64,13 @@ def _f(v) -> str:
     return " ".join(["%.9g"] * len(x)) % tuple(e + 0.0 for e in x)
 
 
+def _fm(v, digits: int) -> str:
+    """Mesh numbers with ``digits`` significant digits (vertices 7, texture coordinates
+    5, normals 4: about what the OBJ files hold)."""
+    x = np.asarray(v, dtype=float).ravel().tolist()
+    return " ".join([f"%.{digits}g"] * len(x)) % tuple(e + 0.0 for e in x)
+
+
 def mat_to_quat(R: np.ndarray) -> np.ndarray:
     """Unit quaternion (w, x, y, z) of a rotation matrix (3, 3), w >= 0."""
     from scipy.spatial.transform import Rotation
@@ -64,6 +78,23 @@ def mat_to_quat(R: np.ndarray) -> np.ndarray:
     x, y, z, w = Rotation.from_matrix(np.asarray(R, dtype=float)[:3, :3]).as_quat()
     q = np.array([w, x, y, z])
     return q if w >= 0 else -q
+
+
+def material_attributes(pbr: dict) -> dict[str, str]:
+    """MJCF ``<material>`` attributes of a material's PBR values (:meth:`Material.to_pbr`).
+
+    ``rgba``: the sRGB colour (MuJoCo does no colour management; white under a texture,
+    which holds the colour) with the opacity as alpha; ``metallic`` and ``roughness``
+    as they are (MuJoCo's PBR renderers); for its classic Phong renderer a highlight
+    that grows with gloss and metalness (``specular`` = (1 - roughness + metallic) / 2,
+    ``shininess`` = (1 - roughness)^2, the MTL file's ``Ns`` / 1000) and a mirror
+    ``reflectance`` = metallic (1 - roughness)^2 / 2 for polished metals.
+    """
+    rgb = (1.0, 1.0, 1.0) if pbr["texture"] else pbr["color_srgb"]
+    m, r = pbr["metallic"], pbr["roughness"]
+    return {"rgba": _f([*rgb, pbr["opacity"]]), "metallic": f"{m:.4g}", "roughness": f"{r:.4g}",
+            "specular": f"{min(1.0, (1.0 - r + m) / 2):.4g}", "shininess": f"{(1.0 - r) ** 2:.4g}",
+            "reflectance": f"{m * (1.0 - r) ** 2 / 2:.4g}"}
 
 
 def _pose(el: ET.Element, T: np.ndarray) -> None:
@@ -122,6 +153,19 @@ def build_mjcf(asset: Asset, actuators: bool = False, mesh_prefix: str = "") -> 
                 el.set("maxhullvert", str(MAX_HULL_VERTICES))
         return meshes[key]
 
+    materials: dict = {}
+
+    def material_name(pbr: dict) -> str:
+        name = pbr["name"]
+        if name not in materials:
+            materials[name] = pbr
+            if pbr["texture"]:
+                ET.SubElement(assets, "texture", name=name, type="2d", file=mesh_prefix + pbr["texture"])
+            el = ET.SubElement(assets, "material", name=name, **material_attributes(pbr))
+            if pbr["texture"]:
+                el.set("texture", name)
+        return name
+
     poses = asset.link_poses()
     world = ET.SubElement(root, "worldbody")
     bodies = {}
@@ -139,8 +183,23 @@ def build_mjcf(asset: Asset, actuators: bool = False, mesh_prefix: str = "") -> 
             ET.SubElement(body, "freejoint", name=f"{lk.name}_free")
         elif j is not None and j.type != "fixed":
             _joint(body, j)
-        for k, g in enumerate(lk.visuals):
-            _geom(body, g, f"{lk.name}_visual{k}", "visual", mesh_name)
+        surf = asset.surfaces.get(lk.name)
+        if surf is not None and len(lk.visuals) == 1 and len(surf.groups) == 1:  # the URDF's mesh file
+            _geom(body, lk.visuals[0], f"{lk.name}_visual0", "visual", mesh_name)
+            body[-1].set("material", material_name(surf.groups[0][0]))
+        elif surf is not None:
+            for k, (pbr, _, _) in enumerate(surf.groups):
+                name = f"{lk.name}_m{k}"
+                V, N, UV, F = surf.group(k)
+                # MuJoCo's images run top row first: v down, as its OBJ reader turns them
+                ET.SubElement(assets, "mesh", name=name, vertex=_fm(V, 7), normal=_fm(N, 4),
+                              texcoord=_fm(np.column_stack([UV[:, 0], 1.0 - UV[:, 1]]), 5),
+                              face=" ".join(map(str, F.ravel().tolist())), inertia="shell")
+                ET.SubElement(body, "geom", {"name": f"{lk.name}_visual{k}", "class": "visual", "type": "mesh",
+                                             "mesh": name, "material": material_name(pbr)})
+        else:
+            for k, g in enumerate(lk.visuals):
+                _geom(body, g, f"{lk.name}_visual{k}", "visual", mesh_name)
         for k, g in enumerate(lk.collisions):
             _geom(body, g, f"{lk.name}_c{k}", "collision", mesh_name)
     pairs = [(j.parent, j.child) for j in asset.joints] + [tuple(p) for p in asset.excludes]

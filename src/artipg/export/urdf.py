@@ -86,6 +86,9 @@ def build_urdf(obj, sections: int = 24, visuals: bool = True) -> tuple[ET.Elemen
     ET.SubElement(mj, "compiler", discardvisual="false", fusestatic="false", strippath="false",
                   balanceinertia="true")
     inertials = {}
+    # collision hulls by OBJ text: identical hulls (the sectors of a ring, equal handles
+    # or panels, in any link) share one file, each placed by its own <origin>
+    hull_files: dict[str, str] = {}
     for link in obj.links:
         el = ET.SubElement(robot, "link", name=link.name)
         mass, com, I = inertials[link.name] = link_inertial(link, sections, obj.materials)
@@ -103,8 +106,11 @@ def build_urdf(obj, sections: int = 24, visuals: bool = True) -> tuple[ET.Elemen
             _origin(vis, np.eye(4))
             ET.SubElement(ET.SubElement(vis, "geometry"), "mesh", filename=path)
             _material(vis, max(surf[4], key=lambda g: g[3])[0])
-        written: dict[tuple[int, int], str] = {}
-        for k, (piece, T, prim) in enumerate(link_collision_entries(link)):
+        # ids of a hull's arrays -> its text (the arrays stay alive in the link's
+        # entries, so their ids are unique meanwhile)
+        hull_texts: dict[tuple[int, int], str] = {}
+        entries = link_collision_entries(link)
+        for k, (piece, T, prim) in enumerate(entries):
             col = ET.SubElement(el, "collision", name=f"{link.name}_c{k}")
             _origin(col, T)
             geom = ET.SubElement(col, "geometry")
@@ -114,11 +120,15 @@ def build_urdf(obj, sections: int = 24, visuals: bool = True) -> tuple[ET.Elemen
                 ET.SubElement(geom, "cylinder", radius=f"{piece.size[0]:.9g}", length=f"{piece.size[1]:.9g}")
             elif piece.shape == "sphere":
                 ET.SubElement(geom, "sphere", radius=f"{piece.size[0]:.9g}")
-            else:  # pieces of a primitive sharing one hull (sectors of a ring) share one file
-                path = written.get((prim, id(piece.vertices)))
+            else:
+                key = (id(piece.vertices), id(piece.faces))
+                text = hull_texts.get(key)
+                if text is None:
+                    text = hull_texts[key] = obj_text(piece.vertices, piece.faces)
+                path = hull_files.get(text)
                 if path is None:
-                    path = written[prim, id(piece.vertices)] = f"meshes/{link.name}_c{k}.obj"
-                    files[path] = obj_text(piece.vertices, piece.faces)
+                    path = hull_files[text] = f"meshes/{link.name}_c{k}.obj"
+                    files[path] = text
                 ET.SubElement(geom, "mesh", filename=path)
     for j in obj.joints:
         el = ET.SubElement(robot, "joint", name=j.name, type=j.type)

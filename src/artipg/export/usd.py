@@ -9,6 +9,15 @@ Layout (``metersPerUnit`` 1, Z up, the object's prim the default prim)::
                               convexHull: one per convex piece, purpose "guide"
       /joints/<joint>         RevoluteJoint / PrismaticJoint / FixedJoint
       /joints/fixed_to_world  FixedJoint to the world (fixtures only)
+      /Looks/<material>       Material with a UsdPreviewSurface (artipg's own objects)
+
+Materials (:attr:`artipg.export.asset.Asset.surfaces`): a visual mesh carries
+vertex normals and ``st`` texture coordinates, is bound to the material covering
+most of it and, with several materials, holds one ``materialBind`` GeomSubset per
+material bound to its own; each material is a ``UsdPreviewSurface`` (diffuse colour,
+or a ``UsdUVTexture`` reading ``./textures/<name>.png`` through the ``st`` primvar;
+metallic, roughness, opacity) (:func:`define_material`). Third-party folders keep
+vertex colours per semantic part only.
 
 Joint frames: ``localPos0``/``localRot0`` place the joint in the parent link (the
 URDF origin turned so that the joint's X axis is the motion axis) and
@@ -90,6 +99,7 @@ def build_stage(asset: Asset, actuators: bool = False):
     base = root.GetPath()
     poses = asset.link_poses()
     paths = {}
+    looks: dict = {}
     for lk in asset.links:
         path = paths[lk.name] = base.AppendChild(_name(lk.name))
         x = UsdGeom.Xform.Define(stage, path)
@@ -102,7 +112,14 @@ def build_stage(asset: Asset, actuators: bool = False):
         moments, R = principal_inertia(lk.inertia)
         mass.CreateDiagonalInertiaAttr().Set(tuple(float(v) for v in moments))
         mass.CreatePrincipalAxesAttr().Set(_quat(R))
-        vm = asset.visual_mesh(lk)
+        surf = asset.surfaces.get(lk.name)
+        vm = None if surf is not None else asset.visual_mesh(lk)
+        if surf is not None:
+            UsdGeom.Xform.Define(stage, path.AppendChild("visuals"))
+            mesh = _mesh(stage, path.AppendChild("visuals").AppendChild("mesh"), surf.vertices, surf.faces)
+            _surface(stage, mesh, surf, looks, base)
+            col = UsdGeom.Gprim(mesh.GetPrim()).CreateDisplayColorPrimvar(UsdGeom.Tokens.vertex)
+            col.Set(Vt.Vec3fArray.FromNumpy(_colors(asset, lk, len(surf.vertices)).astype(np.float32)))
         if vm is not None:
             UsdGeom.Xform.Define(stage, path.AppendChild("visuals"))
             mesh = _mesh(stage, path.AppendChild("visuals").AppendChild("mesh"), *vm)
@@ -140,6 +157,66 @@ def _mesh(stage, path, V, F):
     mesh.CreateFaceVertexIndicesAttr(Vt.IntArray.FromNumpy(np.asarray(F, dtype=np.int32).ravel()))
     mesh.CreateSubdivisionSchemeAttr(UsdGeom.Tokens.none)
     return mesh
+
+
+def _surface(stage, mesh, surf, looks: dict, base) -> None:
+    """Normals, ``st`` and material bindings of a visual ``mesh`` from its :class:`Surface`."""
+    from pxr import Sdf, UsdGeom, UsdShade, Vt
+
+    mesh.CreateNormalsAttr(Vt.Vec3fArray.FromNumpy(np.asarray(surf.normals, dtype=np.float32)))
+    mesh.SetNormalsInterpolation(UsdGeom.Tokens.vertex)
+    st = UsdGeom.PrimvarsAPI(mesh.GetPrim()).CreatePrimvar("st", Sdf.ValueTypeNames.TexCoord2fArray,
+                                                          UsdGeom.Tokens.vertex)
+    st.Set(Vt.Vec2fArray.FromNumpy(np.asarray(surf.uvs, dtype=np.float32)))
+
+    def material(pbr):
+        if not looks:
+            UsdGeom.Scope.Define(stage, base.AppendChild("Looks"))
+        if pbr["name"] not in looks:
+            looks[pbr["name"]] = define_material(stage, base.AppendChild("Looks").AppendChild(_name(pbr["name"])), pbr)
+        return looks[pbr["name"]]
+
+    UsdShade.MaterialBindingAPI.Apply(mesh.GetPrim()).Bind(material(surf.groups[surf.main_group()][0]))
+    if len(surf.groups) > 1:
+        for pbr, f0, f1 in surf.groups:
+            subset = UsdGeom.Subset.CreateGeomSubset(
+                mesh, _name(pbr["name"]), UsdGeom.Tokens.face, Vt.IntArray.FromNumpy(np.arange(f0, f1, dtype=np.int32)),
+                UsdShade.Tokens.materialBind, UsdGeom.Tokens.nonOverlapping)
+            UsdShade.MaterialBindingAPI.Apply(subset.GetPrim()).Bind(material(pbr))
+        UsdShade.MaterialBindingAPI(mesh.GetPrim()).SetMaterialBindSubsetsFamilyType(UsdGeom.Tokens.partition)
+
+
+def define_material(stage, path, pbr: dict):
+    """A ``UsdShade.Material`` at ``path`` with a ``UsdPreviewSurface`` of a material's
+    PBR values (:meth:`artipg.appearance.Material.to_pbr`): linear ``diffuseColor``, or
+    the texture image (sRGB, repeating, read at the ``st`` primvar); ``metallic``,
+    ``roughness`` and ``opacity`` (glass is see-through)."""
+    from pxr import Gf, Sdf, UsdShade
+
+    mat = UsdShade.Material.Define(stage, path)
+    shader = UsdShade.Shader.Define(stage, path.AppendChild("PreviewSurface"))
+    shader.CreateIdAttr("UsdPreviewSurface")
+    shader.CreateInput("metallic", Sdf.ValueTypeNames.Float).Set(pbr["metallic"])
+    shader.CreateInput("roughness", Sdf.ValueTypeNames.Float).Set(pbr["roughness"])
+    shader.CreateInput("opacity", Sdf.ValueTypeNames.Float).Set(pbr["opacity"])
+    diffuse = shader.CreateInput("diffuseColor", Sdf.ValueTypeNames.Color3f)
+    if pbr["texture"]:
+        reader = UsdShade.Shader.Define(stage, path.AppendChild("stReader"))
+        reader.CreateIdAttr("UsdPrimvarReader_float2")
+        reader.CreateInput("varname", Sdf.ValueTypeNames.String).Set("st")
+        tex = UsdShade.Shader.Define(stage, path.AppendChild("diffuseTexture"))
+        tex.CreateIdAttr("UsdUVTexture")
+        tex.CreateInput("file", Sdf.ValueTypeNames.Asset).Set(Sdf.AssetPath("./" + pbr["texture"]))
+        tex.CreateInput("sourceColorSpace", Sdf.ValueTypeNames.Token).Set("sRGB")
+        tex.CreateInput("wrapS", Sdf.ValueTypeNames.Token).Set("repeat")
+        tex.CreateInput("wrapT", Sdf.ValueTypeNames.Token).Set("repeat")
+        tex.CreateInput("st", Sdf.ValueTypeNames.Float2).ConnectToSource(
+            reader.CreateOutput("result", Sdf.ValueTypeNames.Float2))
+        diffuse.ConnectToSource(tex.CreateOutput("rgb", Sdf.ValueTypeNames.Float3))
+    else:
+        diffuse.Set(Gf.Vec3f(*pbr["baseColorFactor"][:3]))
+    mat.CreateSurfaceOutput().ConnectToSource(shader.CreateOutput("surface", Sdf.ValueTypeNames.Token))
+    return mat
 
 
 def _collider(stage, asset, path, g) -> None:

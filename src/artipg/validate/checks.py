@@ -215,6 +215,9 @@ def _floating(kin, pieces, W0, s, tol) -> CheckResult:
     P = len(pieces.part_names)
     comp, pcomp, has_geom, has_piece, lo, hi, several = _contact_graphs(L, P, pieces, a, b, D, tol)
     split = (hi > lo).nonzero()[0]
+    # links held by an anchored joint (a door with clearance) join their parent's graph
+    if several:
+        comp, several = _held(kin, pieces, W0, comp, has_geom, tol)
     # links: one contact graph holding the root (or the first link with geometry)
     if several:
         geo = has_geom.nonzero()[0]
@@ -234,11 +237,17 @@ def _floating(kin, pieces, W0, s, tol) -> CheckResult:
     split = split.tolist()
     if split:
         weight = np.bincount(pieces.part, weights=np.prod(2 * pieces.half, axis=1), minlength=P)
+        # parts touching another link hold their link's parts (a seat moved off its
+        # column floats, not the column that stands on the base)
+        cross = (pieces.link[a] != pieces.link[b]) & (D <= tol.floating)
+        touching = np.zeros(P, dtype=bool)
+        touching[pieces.part[a[cross]]] = True
+        touching[pieces.part[b[cross]]] = True
     for li in split:
         parts = ((pieces.part_link == li) & has_piece).nonzero()[0]
         cs = np.unique(pcomp[parts])
-        size = {c: weight[parts[pcomp[parts] == c]].sum() for c in cs}
-        main = max(cs, key=lambda c: (size[c], -c))
+        size = {c: (touching[parts[pcomp[parts] == c]].any(), weight[parts[pcomp[parts] == c]].sum()) for c in cs}
+        main = max(cs, key=lambda c: (*size[c], -c))
         for c in cs:
             if c == main:
                 continue
@@ -252,6 +261,17 @@ def _floating(kin, pieces, W0, s, tol) -> CheckResult:
     issues.sort(key=lambda i: -round(i.amount, 12))  # stable: ties keep their order
     worst = max([0.0] + [i.amount for i in issues])
     return CheckResult("floating", not issues, worst, issues)
+
+
+def _held(kin, pieces, W0, comp, has_geom, tol):
+    """The link components with those held by an anchored joint merged into their
+    parent's (:func:`artipg.validate.anchoring.held_components`), and whether several
+    remain among the links with geometry."""
+    from artipg.validate.anchoring import REACH_FACTOR, held_components
+
+    comp = held_components(kin, pieces, W0, comp, has_geom, REACH_FACTOR * tol.floating)
+    geo = np.asarray(has_geom, dtype=bool).nonzero()[0]
+    return comp, len(geo) > 0 and len(np.unique(comp[geo])) > 1
 
 
 def _blocker(kin, link: int, j: int) -> int:

@@ -8,10 +8,10 @@ meshes, and possibly an artipg ``annotation.json``. The geometric checks run on
   joints (the folder is then an untouched artipg export);
 - otherwise the URDF's visual geometry: meshes loaded with trimesh (each visual
   element is a part; an artipg link mesh is split back into its closed
-  components), boxes, cylinders and spheres as exact primitives. Mesh signed
-  distances take their sign from ray tests, which is only reliable for closed
-  meshes (PartNet-Mobility meshes often are not; treat their penetration numbers
-  as estimates).
+  components), boxes, cylinders and spheres as exact primitives. Links on fixed
+  joints are parts of their parent's rigid body (:func:`rigid_bodies`). Mesh
+  distances come from :mod:`artipg.validate.mesh_sdf`: penetration depths into
+  closed meshes, open meshes (most PartNet-Mobility parts) as shells.
 
 The simulator checks always run on the URDF file itself.
 """
@@ -26,7 +26,7 @@ import numpy as np
 from artipg.validate.checks import Tolerances, run_checks
 from artipg.validate.kinematics import Kinematics
 from artipg.validate.report import Report
-from artipg.validate.shapes import Pieces
+from artipg.validate.mesh_sdf import MeshPieces
 from artipg.export.annotation import annotated_fixed_base
 
 #: Largest difference (metres / radians) between a folder's URDF joints and the
@@ -53,7 +53,8 @@ def find_urdf(folder: Path) -> Path:
 
 def find_objects(paths) -> list[Path]:
     """Object folders under ``paths``: a folder with a URDF is an object, any other
-    folder is searched recursively for ``mobility.urdf`` files."""
+    folder is searched recursively for ``mobility.urdf`` files (not inside object
+    folders)."""
     out: list[Path] = []
     for p in map(Path, paths):
         try:
@@ -63,20 +64,27 @@ def find_objects(paths) -> list[Path]:
         except FileNotFoundError:
             pass
         if p.is_dir():
-            out += sorted(u.parent for u in p.rglob("mobility.urdf") if not u.parent.name.startswith(".tmp-"))
+            found = sorted(u.parent for u in p.rglob("mobility.urdf") if not u.parent.name.startswith(".tmp-"))
+            # a folder inside an object folder is part of that object (a copy's leftovers)
+            keep = set(found)
+            out += [f for f in found if not any(q in keep for q in f.parents)]
         else:
             raise FileNotFoundError(f"{p}: not an object folder")
     return out
 
 
-def validate_folder(folder, tol: Tolerances = Tolerances(), simulate: bool = True, sim_options=None,
+def validate_folder(folder, tol: Tolerances | None = None, simulate: bool = True, sim_options=None,
                     seed: int = 0, fixed_base: bool | None = None) -> tuple[Report, dict]:
     """Validate the object folder ``folder``.
 
     Parameters
     ----------
     folder : path
-    tol : Tolerances
+    tol : Tolerances, optional
+        Default: :class:`Tolerances` (metres) for artipg's own exports checked on
+        their exact primitives; :func:`relative_tolerances` of the object's
+        bounding-box diagonal for any other folder (third-party objects are often
+        unitless: PartNet-Mobility normalises them to a diagonal of about 2).
     simulate : bool
         Run the pybullet / MuJoCo checks on the URDF.
     sim_options : artipg.validate.sim.SimOptions, optional
@@ -100,19 +108,69 @@ def validate_folder(folder, tol: Tolerances = Tolerances(), simulate: bool = Tru
     if obj is not None:
         from artipg.validate.api import check_object
 
+        tol = tol or Tolerances()
         report = check_object(obj, tol)
         meta.update(geometry="exact", category=obj.category, seed=int(obj.seed))
     else:
         kin, pieces = load_urdf_geometry(urdf, np.random.default_rng([seed, 0x6E0]))
+        diag = rest_diagonal(kin, pieces)
+        tol = tol or relative_tolerances(diag)
+        meta["diagonal"] = diag
         report = Report(run_checks(kin, pieces, tol), tol.to_json())
+        floor_z = rest_floor(kin, pieces)
     if fixed_base is None:
         fixed_base = annotated_fixed_base(folder / "annotation.json")
     meta["fixed_base"] = bool(fixed_base)
     if simulate:
         from artipg.validate.sim import SimOptions, simulate_urdf
 
-        report.checks["simulator"] = simulate_urdf(urdf, sim_options or SimOptions(), fixed_base)
+        opts = sim_options or SimOptions()
+        if obj is not None:
+            report.checks["simulator"] = simulate_urdf(urdf, opts, fixed_base)
+        else:  # third-party: on the floor, flat collision meshes left out, tolerances scaled
+            import tempfile
+
+            from artipg.validate import third_party
+
+            if sim_options is None:
+                opts = third_party.sim_options(opts, tol.penetration / Tolerances().penetration)
+            with tempfile.TemporaryDirectory(prefix="artipg-tp-") as tmp:
+                copy = third_party.prepared_urdf(urdf, floor_z, Path(tmp) / urdf.name)
+                report.checks["simulator"] = simulate_urdf(copy, opts, fixed_base)
     return report, meta
+
+
+#: Tolerances of folders checked on their meshes, per unit of the object's
+#: bounding-box diagonal at rest, calibrated on the PartNet-Mobility development
+#: split (see docs/validation.md): penetration 0.25 % (2.5 mm on a 1 m object, 5
+#: units/1000 at PartNet-Mobility's diagonal of 2), gaps 0.5 % (the pieces of one
+#: rigid body in those models stand up to that far apart without being detached).
+RELATIVE_PENETRATION = 2.5e-3
+RELATIVE_FLOATING = 5e-3
+
+
+def relative_tolerances(diagonal: float) -> Tolerances:
+    """:class:`Tolerances` for an object whose bounding-box diagonal at rest is
+    ``diagonal`` (in its own units): :data:`RELATIVE_PENETRATION` and
+    :data:`RELATIVE_FLOATING` times it."""
+    return Tolerances(penetration=RELATIVE_PENETRATION * diagonal, floating=RELATIVE_FLOATING * diagonal)
+
+
+def rest_diagonal(kin: Kinematics, pieces) -> float:
+    """Diagonal of the bounding box of all pieces at rest (object units)."""
+    from artipg.validate.contacts import world_boxes
+
+    W0 = kin.poses()[pieces.link] @ pieces.T
+    c, h = world_boxes(pieces, W0)
+    return float(np.linalg.norm((c + h).max(axis=0) - (c - h).min(axis=0)))
+
+
+def rest_floor(kin: Kinematics, pieces) -> float:
+    """Height (object units) of the lowest point of the pieces' boxes at rest."""
+    from artipg.validate.contacts import world_boxes
+
+    c, h = world_boxes(pieces, kin.poses()[pieces.link] @ pieces.T)
+    return float((c - h)[:, 2].min())
 
 
 # ------------------------------------------------------------------ artipg folders
@@ -195,7 +253,7 @@ def _urdf_kinematics(robot) -> tuple[Kinematics, dict]:
     return Kinematics(order, parent, jn, jt, origin, axis, limits), idx
 
 
-def load_urdf_geometry(urdf, rng: np.random.Generator) -> tuple[Kinematics, Pieces]:
+def load_urdf_geometry(urdf, rng: np.random.Generator) -> tuple[Kinematics, MeshPieces]:
     """Kinematics and visual geometry pieces of a URDF file (see module docstring)."""
     import trimesh
 
@@ -204,11 +262,12 @@ def load_urdf_geometry(urdf, rng: np.random.Generator) -> tuple[Kinematics, Piec
     urdf = Path(urdf)
     robot = _load_robot(urdf)
     kin, idx = _urdf_kinematics(robot)
+    body, moved = rigid_bodies(kin)
     prims, meshes, part_names, part_link = [], [], [], []
     for link in robot.links:
-        li = idx[link.name]
+        li = body[idx[link.name]]
         for k, vis in enumerate(link.visuals):
-            T = vis.origin if vis.origin is not None else np.eye(4)
+            T = moved[idx[link.name]] @ (vis.origin if vis.origin is not None else np.eye(4))
             g = vis.geometry
             pi = len(part_names)
             part_names.append(vis.name or f"{link.name}_visual{k}")
@@ -222,11 +281,16 @@ def load_urdf_geometry(urdf, rng: np.random.Generator) -> tuple[Kinematics, Piec
             elif g.mesh is not None:
                 path = _mesh_path(urdf, g.mesh.filename)
                 m = trimesh.load(str(path), force="mesh", process=False)
+                # one vertex per position: texture and normal seams must not cut the
+                # surface into pieces (the component split below reads connectivity)
+                m.merge_vertices(merge_tex=True, merge_norm=True)
                 if g.mesh.scale is not None:
                     m.apply_scale(np.broadcast_to(np.asarray(g.mesh.scale, dtype=float), (3,)))
-                parts = m.split(only_watertight=False)
-                if not 1 < len(parts) <= MAX_COMPONENTS or not all(p.is_watertight for p in parts):
-                    parts = [m]
+                parts = [m]
+                if len(m.faces) and 1 < _n_components(m) <= MAX_COMPONENTS:  # labels first: split is costly
+                    parts = m.split(only_watertight=False)
+                    if not all(p.is_watertight for p in parts):
+                        parts = [m]
                 for piece in parts:
                     box = _as_box(piece)
                     if box is not None:  # boxes get the exact box-box tests
@@ -254,7 +318,40 @@ def load_urdf_geometry(urdf, rng: np.random.Generator) -> tuple[Kinematics, Piec
         mesh_map[i] = m
         b = m.bounds
         center[i], half[i] = 0.5 * (b[0] + b[1]), 0.5 * (b[1] - b[0])
-    return kin, Pieces(link, part, Ts, center, half, geom, params, part_names, np.array(part_link), rng, mesh_map)
+    return kin, MeshPieces(link, part, Ts, center, half, geom, params, part_names, np.array(part_link), rng, mesh_map)
+
+
+def rigid_bodies(kin: Kinematics) -> tuple[np.ndarray, np.ndarray]:
+    """The rigid body of every link: the link itself, or for a link on a fixed joint
+    the body of its parent (a handle fixed to its door is part of the door).
+
+    A third-party URDF's fixed joints join pieces of one rigid body (PartNet-Mobility
+    names them so, and the simulators merge them); its geometry is checked as that
+    body's parts, so a handle embedded in its door is its mounting, not a collision
+    between links, and a handle off its door is a floating part.
+
+    Returns
+    -------
+    body : (L,) int64
+        Link index of each link's rigid body (the root's is 0).
+    moved : (L, 4, 4) float64
+        Pose of each link in its body's frame at rest.
+    """
+    P = kin.poses()
+    body = np.arange(kin.n_links)
+    for i in range(1, kin.n_links):  # parents come first
+        if kin.joint_types[i] == "fixed":
+            body[i] = body[kin.parent[i]]
+    moved = np.linalg.inv(P[body]) @ P
+    return body, moved
+
+
+def _n_components(mesh) -> int:
+    """Number of face-connected components of ``mesh``."""
+    import trimesh
+
+    labels = trimesh.graph.connected_component_labels(mesh.face_adjacency, node_count=len(mesh.faces))
+    return int(labels.max()) + 1 if len(labels) else 0
 
 
 def _as_box(mesh):
