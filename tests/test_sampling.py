@@ -134,3 +134,28 @@ def test_family_instances_are_one_per_shape_key_and_survive_pickling():
     assert Extrusion((4, 4)) is Extrusion([4, 4]) and Sweep("LA").name == "sweepLA"
     for fam in (Lathe(4), Extrusion((3,)), GEOMETRY_FAMILIES["rounded_box"](()), Sweep("L")):
         assert pickle.loads(pickle.dumps(fam)) is fam
+
+
+def test_faces_sampled_by_rejection_get_their_share_of_points():
+    """An extruded outline with arcs has flat caps that the families sample by rejection:
+    labelled clouds cover them in proportion to their area."""
+    from artipg.geometry.extrusion import extrusion
+    from artipg.geometry.outlines import ruler
+    from artipg.model.builder import ObjectBuilder
+    from artipg.model.part import Part
+
+    b = ObjectBuilder()
+    root = b.create_link("base")
+    length, width, height = 0.3, 0.03, 0.004
+    prim = extrusion(ruler(length, width, corner=0.008, hole=0.004), height)
+    root.add(Part("body", "rounded_ruler", [prim]))
+    obj = b.build("test", "test", 0)
+    table = obj.primitive_table
+    assert table.regions, "the rounded outline's caps are sampled by rejection"
+    pc = obj.sample_points(20000, seed=3)
+    z = pc.points[:, 2] - pc.points[:, 2].min()
+    on_caps = (np.abs(z) < 1e-9) | (np.abs(z - height) < 1e-9)
+    cap_area = sum(r[3] for r in table.regions)
+    share = cap_area / table.cell_areas.sum()
+    assert abs(on_caps.mean() - share) < 4 * np.sqrt(share * (1 - share) / len(z))
+    np.testing.assert_allclose(np.abs(pc.normals[on_caps, 2]), 1.0, atol=1e-9)

@@ -270,16 +270,32 @@ class PrimitiveTable:
         return out
 
     @cached_property
+    def regions(self) -> list[tuple]:
+        """Faces the families sample by rejection (flat faces bounded by arcs), one
+        ``(draw, row, prim, area)`` per face and primitive: ``draw(row, k, rng)`` gives
+        (6, k) points and normals. They follow the patch cells in the cell order."""
+        out = []
+        for g in self.groups:
+            regions = getattr(g.geom, "regions", None)
+            if regions is None:
+                continue
+            for r in regions(g.P):
+                for j in np.flatnonzero(np.asarray(r.area) > 0.0):
+                    out.append((r.draw, g.P[j], int(g.prim[j]), float(r.area[j])))
+        return out
+
+    @cached_property
     def cell_areas(self) -> np.ndarray:
-        """Area (K,) of every patch cell, m^2, in family order."""
-        fams = self.families
-        return np.concatenate([f.area for f in fams]) if fams else np.zeros(0)
+        """Area (K,) of every patch cell, m^2, in family order, then the rejection-sampled
+        faces of :attr:`regions`."""
+        parts = [f.area for f in self.families] + [np.array([r[3] for r in self.regions])]
+        return np.concatenate(parts)
 
     @cached_property
     def cell_prim(self) -> np.ndarray:
-        """Global primitive index (K,) of every patch cell."""
-        fams = self.families
-        return np.concatenate([f.prim for f in fams]) if fams else np.zeros(0, dtype=np.int64)
+        """Global primitive index (K,) of every patch cell (then of every region face)."""
+        parts = [f.prim for f in self.families] + [np.array([r[2] for r in self.regions], dtype=np.int64)]
+        return np.concatenate(parts)
 
     @cached_property
     def cell_p(self) -> np.ndarray:
@@ -402,6 +418,11 @@ def sample_points(obj, n: int = 2048, seed: int = 0, qpos=None, parts=None) -> P
         idx = np.flatnonzero((cell >= f.start) & (cell < f.stop))
         if len(idx):
             local[:, idx] = sample_family(f.name, f.params[:, cell[idx] - f.start], rng)
+    first = table.families[-1].stop if table.families else 0
+    for j, (draw, row, _, _) in enumerate(table.regions):
+        idx = np.flatnonzero(cell == first + j)
+        if len(idx):
+            local[:, idx] = draw(row, len(idx), rng)
     prim = table.cell_prim[cell]
     W = table.world_all(obj.link_poses(qpos))[prim]  # (n, 3, 4)
     R = W[:, :, :3]
