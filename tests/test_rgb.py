@@ -17,7 +17,7 @@ def test_rgb_view_lines_up_with_the_label_image(category):
     from artipg.appearance.rgb import build_scene, render_rgb
 
     obj = artipg.generate(category, 3)
-    cam = fit_camera(obj, None, width=320, height=240)
+    cam = fit_camera(obj, None, width=640, height=480)  # the size: silhouettes are a smaller share
     rgb, cov = render_rgb(build_scene(obj), cam, spp=4, seed=1)
     labels = render_view(obj, cam).instance
     obj_px, hit = labels >= 0, cov > 0.5

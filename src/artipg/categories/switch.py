@@ -91,6 +91,6 @@ RULE = Category(
     subcategories={"rocker": 3.0, "toggle": 2.0, "push_button": 2.0, "dimmer": 1.0, "surface_box": 3.0},
     fixed_base=True,  # mounted on a wall: simulated mounted, not dropped on a floor
     materials={"body": "plastic"},
-    mass_range=(0.005, 0.5),  # kg: a wall plate with its modules
+    mass_range=(0.005, 1.0),  # kg: a wall plate with its modules; a surface box (modelled solid) up to ~0.9
     slots=(Slot("plate", plate), Slot("modules", modules, after=("plate",))),
 )
