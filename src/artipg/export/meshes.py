@@ -22,7 +22,6 @@ import struct
 from collections import OrderedDict
 
 import numpy as np
-import trimesh
 
 from artipg.geometry import BOX, Primitive
 from artipg.geometry.extrusion import frame_dims, frame_pieces
@@ -78,6 +77,8 @@ def link_visual_arrays(link, sections: int = 24) -> tuple[np.ndarray, np.ndarray
 def link_visual_mesh(link, sections: int = 24) -> trimesh.Trimesh | None:
     """:func:`link_visual_arrays` as a ``trimesh.Trimesh`` (None if the link is empty)."""
     arrays = link_visual_arrays(link, sections)
+    import trimesh
+
     return None if arrays is None else trimesh.Trimesh(*arrays, process=False)
 
 
@@ -317,6 +318,8 @@ def _mass_properties(geom, params, sections):
     if R is not None:
         return 4.0 / 3.0 * np.pi * R ** 3, np.zeros(3), np.eye(3) * (0.4 * R * R)
     V, F = primitive_mesh_arrays(geom, geom.solid_params(p), sections)
+    import trimesh  # only for mass properties: exporting a folder need not load it otherwise
+
     props = trimesh.triangles.mass_properties(V[F], density=1.0)
     vol = abs(float(props.volume))
     if vol <= 0:
