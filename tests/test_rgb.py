@@ -56,3 +56,22 @@ def test_rgb_of_the_partial_views_uses_their_cameras():
     # randomised backgrounds differ between the views
     bg = [out["rgb"][i][~obj_px[i] & ~hit[i]].mean(axis=0) for i in range(2)]
     assert np.abs(bg[0] - bg[1]).sum() > 5
+
+
+def test_generate_writes_colour_views_aligned_with_the_label_views(tmp_path):
+    """``artipg generate --views 1 --rgb random`` adds views_rgb.npz, one colour image per
+    view of views.npz, the same size, and lists it in annotation.json."""
+    import json
+    import subprocess
+    import sys
+
+    r = subprocess.run([sys.executable, "-m", "artipg.cli", "generate", "box", "-n", "1", "--views", "1", "--rgb",
+                        "random", "--out", str(tmp_path), "-q", "--no-validate"], capture_output=True, text=True,
+                       timeout=600)
+    assert r.returncode == 0, r.stderr
+    folder = tmp_path / "box" / "0"
+    with np.load(folder / "views_rgb.npz") as c, np.load(folder / "views.npz") as v:
+        assert c["rgb"].shape[:3] == v["depth"].shape and c["rgb"].dtype == np.uint8
+        assert c["rgb"].std() > 0
+    listed = {f["path"] for f in json.loads((folder / "annotation.json").read_text())["files"]}
+    assert "views_rgb.npz" in listed

@@ -58,6 +58,9 @@ def register(app: typer.Typer) -> None:
         out: Path = typer.Option(Path("out"), "--out", "-o", help="Output folder."),
         points: int = typer.Option(2048, "--points", help="Labelled points per object in points.npz (0: none)."),
         views: int = typer.Option(0, "--views", help="Partial views (2048 points each) per object in views.npz."),
+        rgb: str = typer.Option(None, "--rgb", show_default=False,
+                                help="With --views: colour images of the views in views_rgb.npz, lit 'studio' or "
+                                     "'random' (light and background drawn per view); needs the render extra."),
         workers: int = typer.Option(1, "--workers", "-j", help="Worker processes."),
         overwrite: bool = typer.Option(False, "--overwrite", help="Rewrite objects that already exist."),
         quiet: bool = typer.Option(False, "--quiet", "-q", help="No progress bar."),
@@ -93,6 +96,15 @@ def register(app: typer.Typer) -> None:
             fail(f"--points must be >= 0, got {points}")
         if views < 0:
             fail(f"--views must be >= 0, got {views}")
+        if rgb is not None:
+            if rgb not in ("studio", "random"):
+                fail(f"--rgb must be 'studio' or 'random', got {rgb!r}")
+            if views == 0:
+                fail("--rgb renders the partial views: give --views K too")
+            try:
+                import mitsuba  # noqa: F401
+            except ImportError:
+                fail("--rgb needs Mitsuba 3: pip install -e '.[render]'")
         if workers < 1:
             fail(f"--workers must be at least 1, got {workers}")
         if shards < 0:
@@ -109,7 +121,7 @@ def register(app: typer.Typer) -> None:
         for c in cats:
             clean_stale_tmp(out / c)
         tasks = [(c, s) for c in cats for s in range(seed, seed + n)]
-        opts = BuildOptions(str(out), n_points=points, views=views, validate=validate, simulate=sim,
+        opts = BuildOptions(str(out), n_points=points, views=views, validate=validate, simulate=sim, rgb=rgb,
                             overwrite=overwrite, formats=fmts, actuators=actuators)
         try:
             counts, errors, stopped = _run(tasks, opts, out, workers, quiet, engine, address)

@@ -47,6 +47,8 @@ class BuildOptions:
         :data:`artipg.export.formats.DEFAULT_FORMATS`).
     actuators : bool
         Position servos per joint in MJCF and USD.
+    rgb : str, optional
+        ``"studio"`` or ``"random"``: colour images of the views in ``views_rgb.npz``.
     """
 
     out: str
@@ -58,6 +60,7 @@ class BuildOptions:
     hashes: bool = True
     formats: tuple | None = None
     actuators: bool = False
+    rgb: str | None = None
 
 
 @dataclass
@@ -109,7 +112,7 @@ def build_one(category: str, seed: int, opts: BuildOptions) -> Outcome:
     try:
         obj = artipg.generate(category, seed, validate=opts.validate, simulate=opts.validate and opts.simulate)
         export_object(obj, dest, n_points=opts.n_points, overwrite=True, views=opts.views, formats=opts.formats,
-                      actuators=opts.actuators)
+                      actuators=opts.actuators, rgb=opts.rgb)
         annotation = json.loads((dest / ANNOTATION_NAME).read_bytes())
     except Exception as e:  # noqa: BLE001 - one object's failure must not stop a run of thousands
         return Outcome(category, seed, "error", f"{type(e).__name__}: {e}")

@@ -26,15 +26,18 @@ def point_arrays(obj, n_points: int, seed: int = 0, qpos=None, grasps=True) -> d
 
 
 def object_files(obj, n_points: int = 2048, views: int = 0, view_points: int = 2048, formats=None,
-                 actuators: bool = False) -> dict[str, bytes]:
+                 actuators: bool = False, rgb: str | None = None) -> dict[str, bytes]:
     """All files of the object folder as {relative path: bytes}.
 
     ``views`` > 0 adds ``views.npz`` with that many partial views of ``view_points``
     points each (rest pose; see ``docs/annotations.md``). ``formats`` (default
     :data:`artipg.export.formats.DEFAULT_FORMATS`) adds ``mobility.xml`` (``"mjcf"``),
     ``mobility.usd`` and ``mobility.glb`` beside the URDF, with position servos when
-    ``actuators`` (see ``docs/formats.md``). ``annotation.json`` comes last and lists
-    every other file with its size and hash.
+    ``actuators`` (see ``docs/formats.md``). ``rgb`` (``"studio"`` or ``"random"``
+    lighting and background per view; needs Mitsuba 3, the ``render`` extra) adds
+    ``views_rgb.npz``: a colour image of every partial view, pixel for pixel with its
+    label images. ``annotation.json`` comes last and lists every other file with its
+    size and hash.
     """
     from artipg.annotate.arrays import view_arrays
     from artipg.annotate.grasps import world_grasps
@@ -53,7 +56,12 @@ def object_files(obj, n_points: int = 2048, views: int = 0, view_points: int = 2
     if n_points > 0:
         files["points.npz"] = npz_bytes(point_arrays(obj, n_points, grasps=grasps))
     if views > 0:
-        files["views.npz"] = npz_bytes(view_arrays(obj, views, view_points, seed=obj.seed))
+        varr = view_arrays(obj, views, view_points, seed=obj.seed)
+        files["views.npz"] = npz_bytes(varr)
+        if rgb is not None:
+            from artipg.appearance.rgb import rgb_view_arrays
+
+            files["views_rgb.npz"] = npz_bytes(rgb_view_arrays(obj, varr, seed=obj.seed, randomize=rgb == "random"))
     # the file list covers everything above: add files before this line
     files[ANNOTATION_NAME] = annotation_text(obj, grasps, file_records(files)).encode()
     return files
@@ -106,12 +114,12 @@ def _write_file(path: str, data: bytes) -> None:
 
 
 def export_object(obj, dest, n_points: int = 2048, overwrite: bool = False, views: int = 0, formats=None,
-                  actuators: bool = False) -> Path:
+                  actuators: bool = False, rgb: str | None = None) -> Path:
     """Write the object folder of ``obj`` at ``dest`` (atomically); ``views`` > 0 adds
     ``views.npz`` with that many partial views; ``formats`` (names of
     :data:`artipg.export.formats.FORMATS`, default ``DEFAULT_FORMATS``) the simulator
     files beside the URDF."""
-    files = object_files(obj, n_points, views=views, formats=formats, actuators=actuators)
+    files = object_files(obj, n_points, views=views, formats=formats, actuators=actuators, rgb=rgb)
     return write_files_atomic(files, Path(dest), overwrite=overwrite)
 
 
