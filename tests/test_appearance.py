@@ -199,3 +199,49 @@ def test_export_is_byte_identical_per_seed(exported, tmp_path):
          if p.is_file()}
     b = {p.relative_to(again): p.read_bytes() for p in again.rglob("*") if p.is_file()}
     assert a == b and any(str(k).startswith("textures/") for k in a)
+
+
+def _uv_stretch(prim):
+    """Per triangle of a primitive's render surface: the largest ratio of a texture-space
+    edge length (m) to the same edge's length in space."""
+    from artipg.appearance.textures import TILE_METRES
+    from artipg.export.meshes import primitive_surface_arrays
+
+    V, _, UV, F, _ = primitive_surface_arrays(prim.geom, prim.params, 24)
+    e3 = np.linalg.norm(V[F] - V[np.roll(F, 1, axis=1)], axis=2)
+    e2 = np.linalg.norm(UV[F] - UV[np.roll(F, 1, axis=1)], axis=2) * TILE_METRES
+    return (e2 / np.maximum(e3, 1e-12)).max(axis=1)
+
+
+def test_analytic_uvs_keep_real_scale_and_do_not_wrap_at_seams():
+    """Cylinders, rings, boxes, extrusions and tubes: texture space is metres on the
+    surface, so no triangle stretches its texture (a triangle across a seam would span
+    the whole period)."""
+    from artipg.geometry import cylinder, ring, torus, tube, line, arc
+    from artipg.geometry.extrusion import extrusion
+    from artipg.geometry.profile import circle, rectangle
+    from artipg.geometry.rounded_box import rounded_box
+
+    # bound: 1 + chord slack, or the rim radius over the smallest radius of a curved
+    # surface (a lathe's u is the angle times its largest radius)
+    cases = [(cylinder(0.2, 0.5), 1.01), (rounded_box(0.6, 0.4, 0.05, 0.01), 1.01), (rounded_box(0.3, 0.3, 0.3), 1.01),
+             (extrusion([rectangle(0.5, 0.3, 0.04), circle(0.05)], 0.02), 1.01), (extrusion([circle(0.1)], 0.3), 1.01),
+             (ring(0.3, 0.25, 0.1), 0.3 / 0.25 * 1.01), (torus(0.1, 0.02), 0.12 / 0.08 * 1.01),
+             *[(p, 0.06 / 0.04 * 1.05) for p in tube(0.01, [line(0.3), arc(0.05, 1.5)], 0.0)]]
+    for prim, bound in cases:
+        assert _uv_stretch(prim).max() < bound, prim
+
+
+def test_round_table_tops_are_mapped_flat():
+    """Faces of a lathe facing up take planar coordinates: no texture converging to the
+    centre of a round top (one texel per unit area everywhere)."""
+    from artipg.geometry import cylinder
+
+    prim = cylinder(0.4, 0.03)
+    from artipg.export.meshes import primitive_surface_arrays
+
+    V, N, UV, F, _ = primitive_surface_arrays(prim.geom, prim.params, 24)
+    top = np.abs(N[:, 2]) > 0.999
+    from artipg.appearance.textures import TILE_METRES
+
+    assert np.allclose(UV[top] * TILE_METRES, V[top, :2] + 0.4)

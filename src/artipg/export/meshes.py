@@ -139,8 +139,6 @@ primitive_mesh_arrays = PrimitiveCache(_mesh_arrays)
 #: Faces whose normals differ by less than this angle (degrees) share smooth vertex
 #: normals; sharper edges (a box's) split the vertices.
 CREASE_DEGREES = 40.0
-# texture-space axes (u, v) of faces facing x, y and z in the primitive frame
-_UV_AXES = np.array([[1, 2], [0, 2], [0, 1]])
 
 
 def _cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
@@ -157,7 +155,6 @@ def _surface(geom, params, sections):
     fn = _cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])  # twice the area times the normal
     dbl = np.sqrt(np.einsum("ij,ij->i", fn, fn))
     unit = fn / np.maximum(dbl, 1e-300)[:, None]
-    axis = np.argmax(np.abs(unit), axis=1)
     # every corner (face f, vertex v) against every corner of the same vertex
     cv = F.ravel()
     cf = np.repeat(np.arange(len(F)), 3)
@@ -171,33 +168,55 @@ def _surface(geom, params, sections):
     N = np.zeros((len(cv), 3))
     np.add.at(N, i[near], fn[cf[j[near]]])
     N /= np.maximum(np.sqrt(np.einsum("ij,ij->i", N, N)), 1e-300)[:, None]
-    ax = axis[cf]
-    # v along the longer side of the primitive in each plane: grain and brushing follow
-    # a rail, a door or a table top lengthwise, as they do in real ones
-    ext = V.max(axis=0) - V.min(axis=0) if len(V) else np.zeros(3)
-    axes = np.where((ext[_UV_AXES[:, 0]] > ext[_UV_AXES[:, 1]])[:, None], _UV_AXES[:, ::-1], _UV_AXES)
-    uv = np.take_along_axis(V[cv], axes[ax], axis=1) / TILE_METRES
-    # corners with the same vertex, projection and normal (to 1e-3) become one vertex
+    uv = _corner_uvs(geom, params, V[cv], unit[cf]) / TILE_METRES
+    # corners with the same vertex, texture coordinates and normal (to 1e-3) become one vertex
     q = np.rint(N * 1000.0).astype(np.int64) + 1024
     nkey = (q[:, 0] << 22) | (q[:, 1] << 11) | q[:, 2]
-    ckey = cv * 3 + ax
-    srt = np.lexsort((nkey, ckey))
+    uvkey = np.rint(uv * 1e6)
+    srt = np.lexsort((nkey, uvkey[:, 1], uvkey[:, 0], cv))
     new = np.ones(len(srt), dtype=bool)
-    new[1:] = (np.diff(ckey[srt]) != 0) | (np.diff(nkey[srt]) != 0)
+    new[1:] = ((np.diff(cv[srt]) != 0) | (np.diff(nkey[srt]) != 0)
+               | (np.diff(uvkey[srt, 0]) != 0) | (np.diff(uvkey[srt, 1]) != 0))
     first = srt[new]
     inverse = np.empty(len(srt), dtype=np.int64)
     inverse[srt] = np.cumsum(new) - 1
     return _readonly(V[cv[first]], N[first], uv[first], inverse.reshape(-1, 3), np.array(0.5 * dbl.sum()))
 
 
+def _corner_uvs(geom, params, x: np.ndarray, n: np.ndarray) -> np.ndarray:
+    """Texture coordinates (3F, 2), metres, of the corners ``x`` (3F, 3) of F triangles
+    (three rows each) with face normals ``n`` (3F, 3): the family's analytic UVs, made
+    continuous across each triangle where the family's coordinates wrap around (seams)
+    or are undefined (poles: a corner on a lathe's axis takes its face's other corners'
+    mean)."""
+    uv = np.array(geom.uv(params, x, n), dtype=float)
+    tri = uv.reshape(-1, 3, 2)  # a view: the fixes below write through to uv
+    pole = geom.uv_poles(params, x, n)
+    P = np.zeros(tri.shape[:2], dtype=bool) if pole is None else pole.reshape(-1, 3)
+    for c, lo, hi, mask in geom.uv_seams(params, n):
+        period, t = hi - lo, tri[:, :, c]
+        eps = 1e-9 * max(period, 1.0)
+        inside = ((t >= lo - eps) & (t <= hi + eps)).all(axis=1)
+        if mask is not None:
+            inside &= mask.reshape(-1, 3).all(axis=1)
+        spread = np.where(P, -np.inf, t).max(axis=1) - np.where(P, np.inf, t).min(axis=1)
+        low = (inside & (spread > 0.5 * period))[:, None] & (t < lo + 0.5 * period) & ~P
+        t[low] += period
+    if P.any():
+        others = (~P).sum(axis=1)
+        mean = np.where(~P, tri[:, :, 0], 0.0).sum(axis=1) / np.maximum(others, 1)
+        tri[:, :, 0] = np.where(P, mean[:, None], tri[:, :, 0])
+    return uv
+
+
 #: Surface of a primitive for rendering, in its local frame: vertices (V, 3) metres,
 #: unit normals (V, 3), texture coordinates (V, 2), faces (F, 3) and the area (m^2, a
 #: 0-d array) (memoised, read-only). Vertices are split along creases sharper than :data:`CREASE_DEGREES` and
-#: where the projection changes. UVs are a box projection in the primitive frame: a
-#: face facing mostly x, y or z takes (y, z), (x, z) or (x, y) divided by
+#: where the texture coordinates change. UVs are the geometry family's analytic ones
+#: (metres: arc length along a profile or outline, angle times the rim radius, planar
+#: on box faces and caps; see each family's ``uv``) divided by
 #: :data:`artipg.appearance.textures.TILE_METRES`, so textures keep their real scale.
-#: This is the one place that maps primitives to texture space (analytic UVs of the
-#: geometry families replace it here).
+#: This is the one place that maps primitives to texture space.
 primitive_surface_arrays = PrimitiveCache(_surface)
 
 

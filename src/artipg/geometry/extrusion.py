@@ -240,6 +240,10 @@ class Extrusion(Family):
         total = sum(profile.perimeter(l)[-1] for l in loops)
         return np.array([[0.0, 0.0], [max(total, b[1, 0] - b[0, 0]), max(float(p[-2]), b[1, 1] - b[0, 1])]])
 
+    def uv_seams(self, p, n=None):
+        offs = np.concatenate([[0.0], np.cumsum([profile.perimeter(l)[-1] for l in self.loops(p)])])
+        return [(0, float(a), float(b), None) for a, b in zip(offs[:-1], offs[1:])]
+
     def uv(self, p, x, n):
         """Sides: u = arc length (m) along the closest loop (holes continue after the
         outer loop's perimeter), v = z + h/2 (m). Caps (|nz| > 0.999 on a straight

@@ -79,6 +79,18 @@ class Family(GeometryTemplate):
         """Range (2, 2) of :meth:`uv` on the surface of row ``p``: [[u_lo, v_lo], [u_hi, v_hi]]."""
         raise NotImplementedError
 
+    def uv_seams(self, p, n: np.ndarray | None = None) -> list[tuple]:
+        """Where :meth:`uv` wraps around: (coordinate, lo, hi, mask) for each interval of
+        a texture coordinate that is periodic with period hi - lo (a closed surface of
+        revolution, a closed outline's sides); ``mask`` (N,) marks the points of normals
+        ``n`` (N, 3) that the wrap concerns (None: all). None by default."""
+        return []
+
+    def uv_poles(self, p, x: np.ndarray, n: np.ndarray | None = None) -> np.ndarray | None:
+        """Mask (N,) of points ``x`` (normals ``n``) where :meth:`uv` is undefined along
+        its first coordinate (a lathe's axis), or None where there are none."""
+        return None
+
     # ------------------------------------------------------------ shared
     def patches(self, P) -> list:
         """The surface of rows ``P`` (M, p) as :class:`artipg.geometry.patches.Patch`

@@ -207,11 +207,28 @@ class Lathe(Family):
         return out
 
     def uv_bounds(self, p):
-        return np.array([[0.0, 0.0], [1.0, profile.perimeter(self.loop(p))[-1]]])
+        R = _rim(self.loop(p))
+        return np.array([[0.0, 0.0], [max(min(float(p[-3]), TWO_PI) * R, 2 * R),
+                                       max(profile.perimeter(self.loop(p))[-1], 2 * R)]])
+
+    def uv_seams(self, p, n=None):
+        loop = self.loop(p)
+        side = None if n is None else ~_flat(n)
+        out = [(0, 0.0, TWO_PI * _rim(loop), side)] if min(float(p[-3]), TWO_PI) >= _FULL else []
+        if not _on_axis(loop).any():  # a profile off the axis (a torus, a bent tube) wraps at its start
+            out.append((1, 0.0, float(profile.perimeter(loop)[-1]), side))
+        return out
+
+    def uv_poles(self, p, x, n=None):
+        pole = np.hypot(x[:, 0], x[:, 1]) <= 1e-9 * max(_rim(self.loop(p)), 1e-9)
+        return pole if n is None else pole & ~_flat(n)
 
     def uv(self, p, x, n=None):
-        """u = θ / arc in [0, 1], v = arc length (m) along the profile of the closest
-        profile point, in [0, perimeter]."""
+        """Faces facing up or down (normals ``n`` within 2.6 degrees of z, when given):
+        planar, u = x + R, v = y + R (m), R the profile's largest radius (a round table
+        top is cut from straight planks). Elsewhere u = θ R (m), so a texture keeps its
+        scale on the rim, and v = arc length (m) along the profile of the closest profile
+        point, in [0, perimeter]."""
         x = np.asarray(x, dtype=float)
         arc = min(float(p[-3]), TWO_PI)
         th = np.mod(np.arctan2(x[:, 1], x[:, 0]), TWO_PI)
@@ -219,7 +236,22 @@ class Lathe(Family):
             th = np.where(th > 0.5 * (arc + TWO_PI), 0.0, np.minimum(th, arc))
         q = np.column_stack([np.hypot(x[:, 0], x[:, 1]), x[:, 2]])
         loop = self.loop(p)
-        return np.column_stack([th / arc, profile.loop_length_at(loop, q, _on_axis(loop))])
+        R = _rim(loop)
+        uv = np.column_stack([th * R, profile.loop_length_at(loop, q, _on_axis(loop))])
+        if n is not None:
+            flat = _flat(n)
+            uv[flat] = x[flat, :2] + R
+        return uv
+
+
+def _flat(n) -> np.ndarray:
+    """Mask (N,) of normals ``n`` (N, 3) within 2.6 degrees of the z axis."""
+    return np.abs(np.asarray(n, dtype=float)[:, 2]) > 0.999
+
+
+def _rim(loop) -> float:
+    """The largest radius (m) of a profile loop."""
+    return float(profile.bounds(loop)[1, 0])
 
 
 def _on_axis(loop) -> np.ndarray:

@@ -165,11 +165,15 @@ class RoundedBox(Family):
 
     def uv(self, p, x, n):
         """Per face, planar (m): the two coordinates other than the normal's dominant
-        axis k, in cyclic order (k, i, j), offset by the half extents: u in [0, s_i]."""
+        axis k, offset by the half extents, v along the longer of the two sides (wood
+        grain and brushing run along a rail, a door or a top lengthwise): u in [0, s_i],
+        v in [0, s_j], s_i <= s_j."""
         x = np.asarray(x, dtype=float)
-        half = np.asarray(p[:3], dtype=float) / 2
+        size = np.asarray(p[:3], dtype=float)
+        half = size / 2
         k = np.abs(np.asarray(n)).argmax(axis=1)
         i, j = (k + 1) % 3, (k + 2) % 3
+        i, j = np.where(size[i] > size[j], j, i), np.where(size[i] > size[j], i, j)
         rows = np.arange(len(x))
         return np.column_stack([x[rows, i] + half[i], x[rows, j] + half[j]])
 

@@ -181,11 +181,14 @@ class Sweep(Family):
                          for i, k in enumerate(self.key)))
 
     def uv_bounds(self, p):
-        return np.array([[0.0, 0.0], [self.length(p), 1.0]])
+        return np.array([[0.0, 0.0], [self.length(p), TWO_PI * float(p[0])]])
+
+    def uv_seams(self, p, n=None):
+        return [(1, 0.0, TWO_PI * float(p[0]), None)]
 
     def uv(self, p, x, n=None):
         """u = arc length (m) of the closest centre-line point, in [0, length]; v = the
-        angle around the centre line / 2π, in [0, 1) (0 on the +y side)."""
+        angle around the centre line times the radius (m), in [0, 2π r) (0 on the +y side)."""
         x = np.asarray(x, dtype=float)
         d = np.abs(self._piece_sdfs(p, x))
         which = d.argmin(axis=0)
@@ -209,7 +212,7 @@ class Sweep(Family):
                 u[sel] = s0[0] + R[0] * th
             dv = x[sel] - c
             side = np.cross(tan, _Y)
-            v[sel] = np.mod(np.arctan2((dv * side).sum(axis=1), dv @ _Y), TWO_PI) / TWO_PI
+            v[sel] = np.mod(np.arctan2((dv * side).sum(axis=1), dv @ _Y), TWO_PI) * float(p[0])
         return np.column_stack([u, v])
 
 
