@@ -17,7 +17,7 @@ from pathlib import Path
 import numpy as np
 
 from artipg.annotate.views import fit_camera, object_sphere, render_view
-from artipg.vocabulary import ACTIONABLE_ID, AFFORDANCES
+from artipg.vocabulary import ACTIONABLE_ID, AFFORDANCES, SEMANTIC_LABELS, label_id
 
 COLOR_BY = ("semantic", "instance", "link", "actionable")
 BACKGROUND = np.array([255, 255, 255], dtype=np.uint8)
@@ -110,6 +110,31 @@ def _items(objs_with_qpos):
             yield it, None
 
 
+#: Height in pixels of one row of a picture's colour key.
+LEGEND_ROW = 16
+
+
+def semantic_legend(objs) -> list[tuple[str, np.ndarray]]:
+    """(label, RGB colour in [0, 1]) of every semantic label the parts of ``objs`` carry,
+    in vocabulary order: the key of the semantic colours of :func:`render_image`."""
+    ids = sorted({label_id(p.semantic) for o in objs for p in o.parts})
+    colors = palette(ids[-1] + 1) if ids else np.zeros((0, 3))
+    return [(SEMANTIC_LABELS[i], colors[i]) for i in ids]
+
+
+def _legend_rows(legend, width: int) -> list[list[tuple[int, str, np.ndarray]]]:
+    """Lay ``legend`` entries out left to right in rows of ``width`` pixels: (x, name, colour)."""
+    rows, row, x = [], [], 6
+    for name, c in legend:
+        w = 20 + 6 * len(name)
+        if row and x + w > width:
+            rows.append(row)
+            row, x = [], 6
+        row.append((x, name, c))
+        x += w + 8
+    return rows + ([row] if row else [])
+
+
 def save_grid(objs_with_qpos, path, ncols: int = 4, width: int = 320, height: int = 240, titles=None,
               **render_kw) -> Path:
     """Render several objects into one grid PNG.
@@ -128,6 +153,7 @@ def save_grid(objs_with_qpos, path, ncols: int = 4, width: int = 320, height: in
         One caption per cell; default ``"<category> <seed>"``.
     **render_kw
         Passed to :func:`render_image` (``azimuth``, ``elevation``, ``color_by`` ...).
+        Semantic colours (the default) get a colour key of the labels shown below the grid.
 
     Returns
     -------
@@ -141,7 +167,10 @@ def save_grid(objs_with_qpos, path, ncols: int = 4, width: int = 320, height: in
         raise ValueError("save_grid needs at least one object")
     ncols = max(1, min(ncols, len(items)))
     nrows = (len(items) + ncols - 1) // ncols
-    grid = Image.new("RGB", (ncols * width, nrows * height), tuple(int(x) for x in BACKGROUND))
+    legend = semantic_legend([o for o, _ in items]) if render_kw.get("color_by", "semantic") == "semantic" else []
+    rows = _legend_rows(legend, ncols * width)
+    grid = Image.new("RGB", (ncols * width, nrows * height + LEGEND_ROW * len(rows)),
+                     tuple(int(x) for x in BACKGROUND))
     draw = ImageDraw.Draw(grid)
     for i, (obj, q) in enumerate(items):
         img = render_image(obj, q, width=width, height=height, **render_kw)
@@ -149,6 +178,11 @@ def save_grid(objs_with_qpos, path, ncols: int = 4, width: int = 320, height: in
         grid.paste(Image.fromarray(img), (x, y))
         title = titles[i] if titles is not None else f"{obj.category} {obj.seed}"
         draw.text((x + 4, y + 3), title, fill=(0, 0, 0))
+    for r, row in enumerate(rows):  # colour key of the semantic labels shown
+        y = nrows * height + r * LEGEND_ROW + 3
+        for x, name, c in row:
+            draw.rectangle((x, y + 1, x + 9, y + 10), fill=tuple(int(255 * v) for v in c))
+            draw.text((x + 13, y), name, fill=(0, 0, 0))
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     grid.save(path, optimize=True)
@@ -314,6 +348,11 @@ def render_annotations(obj, qpos=None, width: int = 400, height: int = 300, azim
         x, y = (i % 2) * width, (i // 2) * height
         grid.paste(Image.fromarray(img), (x, y))
         draw.text((x + 4, y + 3), title, fill=(0, 0, 0))
+    for r, row in enumerate(_legend_rows(semantic_legend([obj]), width)):  # colour key of the semantic panel
+        for x, name, c in row:
+            y = 17 + r * LEGEND_ROW
+            draw.rectangle((x, y + 1, x + 9, y + 10), fill=tuple(int(255 * v) for v in c))
+            draw.text((x + 13, y), name, fill=(0, 0, 0))
     x = width + 78
     for name, c in legend:  # colour key of the affordance panel
         draw.rectangle((x, 4, x + 8, 12), fill=tuple(int(255 * v) for v in c))
