@@ -67,3 +67,36 @@ def test_dispensers_are_deterministic():
     assert a.params.keys() == b.params.keys()
     assert all(a.params[k].value == b.params[k].value for k in a.params)
     np.testing.assert_array_equal(a.bounds(), b.bounds())
+
+
+def test_shampoo_caps_flip_tilt_or_pump():
+    seen = set()
+    for seed in SEEDS:
+        obj = artipg.generate("shampoo", seed)
+        seen.add(obj.subcategory)
+        D, W, H = _extents(obj)
+        assert 0.13 <= H <= 0.28 and 0.03 <= D <= 0.095 and 0.045 <= W <= 0.095
+        body = next(p for p in obj.parts if p.semantic == "body")
+        if body.template != "round_squeeze_body":  # oval sections: the wide face looks front (-x)
+            bx, by, _ = body.bounds()[1] - body.bounds()[0]
+            assert by > bx
+        if obj.subcategory == "flip_cap":
+            (lid,) = obj.movable_joints
+            assert lid.type == "revolute" and np.allclose(lid.axis, (0, 1, 0)) and 1.8 <= lid.limits[1] <= 2.8
+        elif obj.subcategory == "disc_top":
+            (disc,) = obj.movable_joints
+            assert disc.type == "revolute" and np.allclose(disc.axis, (0, 1, 0)) and 0.05 <= disc.limits[1] <= 0.31
+        else:
+            (collar,), (pump,) = _joints(obj, "collar"), _joints(obj, "pump")
+            assert collar.type == "continuous" and pump.type == "prismatic" and 0.005 <= pump.limits[1] <= 0.01
+    assert seen == {"flip_cap", "disc_top", "pump_lotion"}
+
+
+def test_shampoo_disc_tilts_its_back_down_and_front_up():
+    for seed in SEEDS:
+        obj = artipg.generate("shampoo", seed)
+        for j in _joints(obj, "disc"):
+            child = obj.link_index[j.child]
+            back, front = np.array([0.01, 0.0, 0.0, 1.0]), np.array([-0.01, 0.0, 0.0, 1.0])
+            rest, tilted = obj.link_poses()[child], obj.link_poses({j.name: j.limits[1]})[child]
+            assert (tilted @ back)[2] < (rest @ back)[2] and (tilted @ front)[2] > (rest @ front)[2]

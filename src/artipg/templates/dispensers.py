@@ -31,14 +31,17 @@ _ALONG_X = Placer(rot_y(-math.pi / 2))  # local z -> -x
 _ALONG_Y = Placer(rot_x(math.pi / 2))  # local z -> -y (an x-z outline extruded across y)
 
 
-def oval_body(p, radius: float, height: float, neck_r: float, neck_h: float, flat=(0.45, 0.8)) -> Part:
-    """Flat bottle: a rounded box ``2 radius`` long (x, the way the head points) and
-    ``flat`` times that across (y), its edges rounded by up to 60 % of the half depth
-    (a rounded plan and shoulders; the flat bottom keeps 40 % or more of the depth to
-    stand on), and a neck ring sunk into the top. Frame and anchors as
+def oval_body(p, radius: float, height: float, neck_r: float, neck_h: float, flat=(0.45, 0.8),
+              across: bool = False) -> Part:
+    """Flat bottle: a rounded box ``2 radius`` long (x, the way the head points; y with
+    ``across``) and ``flat`` times that the other way, its edges rounded by up to 60 %
+    of the half depth (a rounded plan and shoulders; the flat bottom keeps 40 % or more
+    of the depth to stand on), and a neck ring sunk into the top. Frame and anchors as
     :mod:`artipg.templates.bottles`."""
     sx = 2 * radius
     sy = sx * p.uniform("flatness", *flat)
+    if across:
+        sx, sy = sy, sx
     hb = height - neck_h
     r = p.uniform("rounding", 0.35, 0.6) * min(sx, sy, hb) / 2
     t = p.uniform("neck_wall", 0.0018, 0.0032)
