@@ -100,3 +100,44 @@ def test_shampoo_disc_tilts_its_back_down_and_front_up():
             back, front = np.array([0.01, 0.0, 0.0, 1.0]), np.array([-0.01, 0.0, 0.0, 1.0])
             rest, tilted = obj.link_poses()[child], obj.link_poses({j.name: j.limits[1]})[child]
             assert (tilted @ back)[2] < (rest @ back)[2] and (tilted @ front)[2] > (rest @ front)[2]
+
+
+def test_shavers_pivot_flip_and_spin_like_real_ones():
+    seen = set()
+    for seed in range(24):
+        obj = artipg.generate("shaver", seed)
+        seen.add(obj.subcategory)
+        D, W, H = _extents(obj)
+        if obj.subcategory == "safety_razor":
+            (cart,) = obj.movable_joints
+            assert cart.type == "revolute" and np.allclose(cart.axis, (0, 1, 0)) and 0.4 <= cart.limits[1] <= 0.8
+            assert 0.09 <= D <= 0.15 and H <= 0.02  # lying on its handle
+            blades = [p for p in obj.parts if p.semantic == "head"][0].primitives[1:]
+            assert 2 <= len(blades) <= 5
+            continue
+        (button,) = _joints(obj, "button")
+        assert button.type == "prismatic" and np.allclose(button.axis, (1, 0, 0))  # into the front face
+        assert 0.12 <= H <= 0.2 and 0.03 <= D <= 0.085
+        if obj.subcategory == "foil_shaver":
+            (head,), (cover,) = _joints(obj, "head"), _joints(obj, "cover")
+            assert head.type == "revolute" and head.limits[0] < 0 < head.limits[1]  # rocks both ways
+            assert cover.type == "prismatic" and np.allclose(cover.axis, (0, 0, 1))
+            for trimmer in _joints(obj, "trimmer"):
+                assert trimmer.type == "prismatic" and np.allclose(trimmer.axis, (0, 0, 1)) and trimmer.limits[1] > 0.004
+        else:
+            (holder,) = _joints(obj, "holder")
+            cutters = _joints(obj, "cutter")
+            assert holder.type == "revolute" and 1.3 <= holder.limits[1] <= 1.9
+            assert len(cutters) in (2, 3) and all(j.type == "continuous" for j in cutters)
+    assert seen == {"foil_shaver", "rotary_shaver", "safety_razor"}
+
+
+def test_shaver_cover_lifts_clear_of_the_foils():
+    for seed in range(24):
+        obj = artipg.generate("shaver", seed)
+        for j in _joints(obj, "cover"):
+            cover = next(i for i, p in enumerate(obj.parts) if p.template == "foil_cover")
+            foils = next(i for i, p in enumerate(obj.parts) if p.template == "foils")
+            lo = obj.sample_points(400, seed=0, qpos={j.name: j.limits[1]}, parts=[cover]).points[:, 2].min()
+            hi = obj.sample_points(400, seed=0, parts=[foils]).points[:, 2].max()
+            assert lo > hi + 0.004
