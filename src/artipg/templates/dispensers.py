@@ -18,6 +18,7 @@ import numpy as np
 
 from artipg.geometry import cuboid, cylinder, prism, ring, sphere
 from artipg.geometry.extrusion import extrusion
+from artipg.geometry.lathe import lathe
 from artipg.geometry.rounded_box import rounded_box
 from artipg.geometry.profile import polygon
 from artipg.geometry.transforms import Placer, rot_x, rot_y, translation
@@ -51,6 +52,24 @@ def oval_body(p, radius: float, height: float, neck_r: float, neck_h: float, fla
     anchors = {"neck_top": (0.0, 0.0, height), "neck_edge": (neck_r, 0.0, height),
                "bore_edge": (neck_r - t, 0.0, height), "neck_base": (0.0, 0.0, hb)}
     return Part("body", "oval_body", prims, anchors=anchors,
+                regions={"grasp": Region(("wall",)), "lift": Region(("wall",))})
+
+
+def turned_body(p, radius: float, height: float, neck_r: float, neck_h: float) -> Part:
+    """Round bottle turned from one lathe profile (no hidden discs inside it, unlike a
+    stack of solids): a straight wall, then a conical or rounded shoulder up to the
+    neck ring. Frame and anchors as :mod:`artipg.templates.bottles`."""
+    hs = p.uniform("shoulder", 0.08, 0.3) * (height - neck_h)
+    hb = height - neck_h - hs
+    rt = neck_r + p.uniform("shoulder_top", 0.001, 0.004)
+    bulge = p.uniform("shoulder_round", 0.2, 0.4) if p.flag("rounded", 0.5) else 0.0  # no near-straight arcs: slow
+    loop = [(0.0, 0.0, 0.0), (radius, 0.0, 0.0), (radius, hb, bulge), (rt, hb + hs, 0.0), (0.0, hb + hs, 0.0)]
+    t = p.uniform("neck_wall", 0.0018, 0.0032)
+    prims = [lathe(loop, role="wall"),
+             ring(neck_r, neck_r - t, neck_h + 0.002, pose=translation(0, 0, height - (neck_h + 0.002) / 2), role="neck")]
+    anchors = {"neck_top": (0.0, 0.0, height), "neck_edge": (neck_r, 0.0, height),
+               "bore_edge": (neck_r - t, 0.0, height), "neck_base": (0.0, 0.0, hb + hs)}
+    return Part("body", "turned_body", prims, anchors=anchors,
                 regions={"grasp": Region(("wall",)), "lift": Region(("wall",))})
 
 
@@ -110,7 +129,7 @@ HEADS = {round_head: 2.0, block_head: 1.5}
 
 
 def lotion_pump(p, builder, parent, pose, neck, head, curved: bool, lock: bool, travel=(0.008, 0.016),
-                stem=(0.008, 0.035), head_radius=(0.01, 0.018)):
+                stem=(0.008, 0.045), head_radius=(0.01, 0.018)):
     """Soap / lotion pump: a screw collar (continuous about z), a pump stem pressed down
     (prismatic -z by ``travel`` m) carrying a head (``head`` template: round or block,
     ``head_radius`` m) with a spout along -x; with ``lock`` the head is its own link that
@@ -119,7 +138,7 @@ def lotion_pump(p, builder, parent, pose, neck, head, curved: bool, lock: bool, 
     rn, bore, hn = neck
     rs = min(p.uniform("stem_radius", 0.003, 0.005), bore - 2 * CLEAR - 0.0015)
     collar, tt, ro = _collar(p, neck, hole=rs + CLEAR)
-    boss = p.uniform("boss_height", 0.004, 0.012)
+    boss = p.uniform("boss_height", 0.004, 0.02)
     rb = rs + CLEAR + p.uniform("boss_wall", 0.0015, 0.003)
     collar.primitives.append(ring(rb, rs + CLEAR, boss, pose=translation(0, 0, tt + boss / 2), role="top"))
     links = [_spin(builder, parent, pose, collar)]
@@ -182,9 +201,9 @@ def trigger_sprayer(p, builder, parent, pose, neck, trigger_pull=(0.3, 0.6), noz
     rn, _, hn = neck
     collar, tt, ro = _collar(p, neck, height=(0.014, 0.022))
     ws = min(p.uniform("shroud_width", 0.024, 0.034), 2 * ro + 0.008)
-    hs = p.uniform("shroud_height", 0.045, 0.07)
+    hs = p.uniform("shroud_height", 0.05, 0.085)
     hn_ = p.uniform("nose_height", 0.4, 0.6) * hs
-    back = ro * p.uniform("shroud_back", 0.9, 1.2)
+    back = ro * p.uniform("shroud_back", 1.0, 2.0)
     # trigger: pivot under the nose, its swept outline kept in front of the collar and above the body
     r = p.uniform("trigger_half_width", 0.003, 0.005)
     tw = p.uniform("trigger_width", 0.7, 0.9) * ws
@@ -193,12 +212,12 @@ def trigger_sprayer(p, builder, parent, pose, neck, trigger_pull=(0.3, 0.6), noz
     zp = z_nose - r - 0.0012  # the pin hangs just under the nose
     pull = p.uniform("trigger_pull", *trigger_pull)
     # the swing lowers the front of the lower end by at most (r + tip) sin(pull): stay above the neck's base
-    L = min(p.uniform("trigger_length", 0.035, 0.06), zp + hn - GAP - (r + tip) * math.sin(pull))
+    L = min(p.uniform("trigger_length", 0.035, 0.07), zp + hn - GAP - (r + tip) * math.sin(pull))
     pts = _trigger_outline(r, L, kick, tip)
     th = np.linspace(0.0, pull, 6)[:, None]
     xs = pts[:, 0] * np.cos(th) - pts[:, 1] * np.sin(th)  # rotation about -y moves the lower end to +x
     xp = -ro - GAP - float(xs.max())
-    front = xp - p.uniform("nose_overhang", 0.004, 0.02) - r
+    front = xp - p.uniform("nose_overhang", 0.006, 0.03) - r
     shroud = [rounded_box(back + ro, ws, hs, min(0.3 * ws, 0.006), translation((back - ro) / 2, 0, tt + hs / 2),
                           role="shroud"),
               rounded_box(-ro * 0.5 - front, ws, hn_, min(0.3 * ws, 0.3 * hn_, 0.006),
