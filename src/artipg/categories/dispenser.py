@@ -16,7 +16,7 @@ the nose, 0.3-0.6 rad; nozzle caps revolute about their axis, 90-180 degrees (of
 spray / stream); wall push plates prismatic into the housing by 6-12 mm or hinged at
 their top edge (revolute, as far); refill lids revolute about the back top edge,
 70-100 degrees.
-Sizes (metres): pump bottles 0.13-0.25 tall over all, bodies 0.07-0.12 across;
+Sizes (metres): pump bottles 0.12-0.25 tall over all, bodies 0.06-0.13 across;
 spray bottles 0.2-0.31 tall (round-flask ones 0.12-0.2), 0.1-0.14 deep with the
 nozzle, bodies 0.065-0.1 across (flat ones 0.03-0.075), spray heads 0.07-0.11 tall; wall units 0.07-0.12 deep, 0.09-0.14 wide, 0.15-0.28 tall.
 Wall units are simulated standing on their back plate and nozzle (the category is
@@ -32,9 +32,9 @@ from artipg.templates.dispensers import HEADS, lotion_pump, oval_body, trigger_s
 
 # sub-category -> body radius, body height (to the neck's top), neck radius, neck height, body weights
 SUBS = {
-    "pump_dispenser": ((0.035, 0.06), (0.09, 0.17), (0.011, 0.016), (0.014, 0.022),
+    "pump_dispenser": ((0.03, 0.065), (0.09, 0.17), (0.011, 0.016), (0.014, 0.022),
                        {turned_body: 3.0, square_body: 1.5, oval_body: 1.5, flask_body: 1.0}),
-    "trigger_sprayer": ((0.032, 0.05), (0.15, 0.23), (0.012, 0.016), (0.014, 0.02),
+    "trigger_sprayer": ((0.032, 0.05), (0.15, 0.23), (0.012, 0.016), (0.014, 0.04),
                         {turned_body: 4.0, oval_body: 2.0, flask_body: 0.5}),
 }
 #: flatness (depth / width) of oval bodies per sub-category

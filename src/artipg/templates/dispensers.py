@@ -59,7 +59,7 @@ def turned_body(p, radius: float, height: float, neck_r: float, neck_h: float) -
     """Round bottle turned from one lathe profile (no hidden discs inside it, unlike a
     stack of solids): a straight wall, then a conical or rounded shoulder up to the
     neck ring. Frame and anchors as :mod:`artipg.templates.bottles`."""
-    hs = p.uniform("shoulder", 0.08, 0.3) * (height - neck_h)
+    hs = p.uniform("shoulder", 0.05, 0.4) * (height - neck_h)
     hb = height - neck_h - hs
     rt = neck_r + p.uniform("shoulder_top", 0.001, 0.004)
     bulge = p.uniform("shoulder_round", 0.2, 0.4) if p.flag("rounded", 0.5) else 0.0  # no near-straight arcs: slow
