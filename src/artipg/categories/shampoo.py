@@ -13,7 +13,7 @@ pressed down until it meets the recess floor); pump collars continuous about the
 neck, pumps prismatic down by 5-10 mm, locking heads a further revolute about z.
 Sizes (metres): bodies 0.05-0.09 wide, 0.5-0.8 of that deep (round ones as deep as
 wide), 0.13-0.24 tall to the neck's top; caps 0.028-0.044 across; pump bottles
-0.17-0.27 tall over all. Unlike :mod:`artipg.categories.dispenser` (rigid pump and
+0.16-0.26 tall over all. Unlike :mod:`artipg.categories.dispenser` (rigid pump and
 spray bottles), these are squeeze bottles with oval sections and snap-on caps.
 """
 

@@ -14,7 +14,7 @@ front edge of the top (-y axis, flipping up and forward 75-110 degrees), each cu
 continuous about its own axis; razor cartridges revolute about the hub (y), 0.4-0.8
 rad.
 Sizes (metres): electric shavers 0.03-0.05 deep, 0.045-0.065 wide, bodies 0.1-0.15
-tall (0.13-0.19 with the head); foil heads 0.04-0.075 wide; rotary holders 0.05-0.08
+tall (0.12-0.19 with the head); foil heads 0.04-0.075 wide; rotary holders 0.05-0.08
 across; razors 0.1-0.14 long, cartridges 0.034-0.045 wide.
 """
 
