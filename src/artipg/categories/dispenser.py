@@ -18,7 +18,8 @@ their top edge (revolute, as far); refill lids revolute about the back top edge,
 70-100 degrees.
 Sizes (metres): pump bottles 0.12-0.25 tall over all, bodies 0.06-0.13 across;
 spray bottles 0.2-0.31 tall (round-flask ones 0.12-0.2), 0.1-0.14 deep with the
-nozzle, bodies 0.065-0.1 across (flat ones 0.03-0.075), spray heads 0.07-0.11 tall; wall units 0.07-0.12 deep, 0.09-0.14 wide, 0.15-0.28 tall.
+nozzle, bodies 0.065-0.1 across (flat ones 0.03-0.075), spray heads 0.07-0.11 tall;
+wall units 0.07-0.12 deep, 0.09-0.14 wide, 0.15-0.28 tall.
 Wall units are simulated standing on their back plate and nozzle (the category is
 not a fixture: the bottles stand free).
 """

@@ -66,7 +66,8 @@ def turned_body(p, radius: float, height: float, neck_r: float, neck_h: float) -
     loop = [(0.0, 0.0, 0.0), (radius, 0.0, 0.0), (radius, hb, bulge), (rt, hb + hs, 0.0), (0.0, hb + hs, 0.0)]
     t = p.uniform("neck_wall", 0.0018, 0.0032)
     prims = [lathe(loop, role="wall"),
-             ring(neck_r, neck_r - t, neck_h + 0.002, pose=translation(0, 0, height - (neck_h + 0.002) / 2), role="neck")]
+             ring(neck_r, neck_r - t, neck_h + 0.002, pose=translation(0, 0, height - (neck_h + 0.002) / 2),
+                  role="neck")]
     anchors = {"neck_top": (0.0, 0.0, height), "neck_edge": (neck_r, 0.0, height),
                "bore_edge": (neck_r - t, 0.0, height), "neck_base": (0.0, 0.0, hb + hs)}
     return Part("body", "turned_body", prims, anchors=anchors,
@@ -226,7 +227,8 @@ def trigger_sprayer(p, builder, parent, pose, neck, trigger_pull=(0.3, 0.6), noz
     collar.template = "sprayer_collar"
     cl = _spin(builder, parent, pose, collar)
     trig = Part("lever", "trigger",
-                [extrusion([polygon(pts)], tw, pose=_ALONG_Y.at(), role="trigger"), cylinder(r, tw, _ALONG_Y.at(), role="pin")],
+                [extrusion([polygon(pts)], tw, pose=_ALONG_Y.at(), role="trigger"),
+                 cylinder(r, tw, _ALONG_Y.at(), role="pin")],
                 regions={"grasp": Region(("trigger",)), "press": Region(("trigger",)), "pull": Region(("trigger",))},
                 grasps=Deferred.one(front_pinch, r + 0.6 * kick, -0.6 * L, tw + 0.02),
                 actionable="hinge_handle")
@@ -238,7 +240,8 @@ def trigger_sprayer(p, builder, parent, pose, neck, trigger_pull=(0.3, 0.6), noz
     sides = p.choice("nozzle_sides", {4: 2.0, 6: 1.0, 16: 1.0})
     nozzle = Part("nozzle", "nozzle_cap", [prism(rc, lc, sides, _ALONG_X.at(-lc / 2), role="cap")],
                   regions={"rotate": Region(("cap",)), "grasp": Region(("cap",))},
-                  grasps=Deferred.one(front_pinch, -0.3 * lc, 0.0, 2 * rc + 0.02, (0.0, 0.0, 0.0)), actionable="hinge_knob")
+                  grasps=Deferred.one(front_pinch, -0.3 * lc, 0.0, 2 * rc + 0.02, (0.0, 0.0, 0.0)),
+                  actionable="hinge_knob")
     nl = builder.create_link("nozzle", cl)
     nl.set_joint("revolute", translation(front, 0, z_nose + hn_ / 2), axis=(-1.0, 0.0, 0.0),
                  limits=(0.0, p.uniform("nozzle_turn", *nozzle_turn)))
@@ -292,7 +295,8 @@ def wall_dispenser(p, builder, root, D: float, W: float, H: float, plate: str, t
         pl.set_joint("revolute", translation(xf + t, 0, nz + zb + hp), axis=(0.0, -1.0, 0.0),
                      limits=(0.0, math.asin(min(trav / hp, 0.5))))
         pl.add(plate_part, translation(-t, 0, 0))
-    lid = Part("lid", "refill_lid", [rounded_box(D, W, tl, min(rr, 0.45 * tl), translation(-D / 2, 0, -tl / 2), role="lid")],
+    lid = Part("lid", "refill_lid",
+               [rounded_box(D, W, tl, min(rr, 0.45 * tl), translation(-D / 2, 0, -tl / 2), role="lid")],
                regions={"lift": Region(("lid",)), "pull": Region(("lid",))},
                grasps=Deferred.one(top_grasp, -D * 0.8, 0.0, -tl / 2, W + 0.02, "y"), actionable="hinge_lid")
     ll = builder.create_link("lid", root)

@@ -152,7 +152,8 @@ def rotary_head(p, builder, parent, top, D: float, W: float, n_heads=ROTARY_HEAD
                   regions={"lift": Region(("holder",)), "grasp": Region(("holder",))},
                   grasps=Deferred.one(top_grasp, Rh, 0.0, hh / 2, 2 * Rh + 0.02, "y"), actionable="hinge_lid")
     hl = builder.create_link("holder", parent)
-    hl.set_joint("revolute", translation(hinge, 0, z0), axis=(0.0, -1.0, 0.0), limits=(0.0, p.uniform("open", *open_range)))
+    hl.set_joint("revolute", translation(hinge, 0, z0), axis=(0.0, -1.0, 0.0),
+                 limits=(0.0, p.uniform("open", *open_range)))
     hl.add(holder)
     hc = p.uniform("cutter_height", 0.003, 0.006)
     phase = math.pi if n == 2 else math.pi / 2
@@ -192,7 +193,8 @@ def razor(p, builder, root, L: float, n_blades=(2, 5), pivot=(0.4, 0.8)):
     bx = (np.arange(n) - (n - 1) / 2) * (0.6 * cx / max(n - 1, 1))
     cart = Part("head", "cartridge",
                 [rounded_box(cx, cw, ct, min(0.4 * ct, 0.002), translation(-rp - cx / 2, 0, 0), role="cartridge")]
-                + [cuboid(0.0008, 0.88 * cw, 0.0006, translation(-rp - cx / 2 + float(x), 0, ct / 2 + 0.0003), role="blade")
+                + [cuboid(0.0008, 0.88 * cw, 0.0006, translation(-rp - cx / 2 + float(x), 0, ct / 2 + 0.0003),
+                       role="blade")
                    for x in bx],
                 regions={"grasp": Region(("cartridge",)), "push": Region(("blade",))})
     link = builder.create_link("cartridge", root)
