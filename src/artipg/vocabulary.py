@@ -53,6 +53,7 @@ SEMANTIC_LABELS: tuple[str, ...] = (
     "connector",   # USB plug, its sliding carriage
     "cover",       # swivel cover of a flash drive
     "blade",       # scissor, plier, knife blade or jaw
+    "head",        # shaver head, razor cartridge, rotary head holder
 )
 
 LABEL_ID: dict[str, int] = {name: i for i, name in enumerate(SEMANTIC_LABELS)}

@@ -84,6 +84,17 @@ SCHEMES: dict[str, dict] = {
                 "families": {"main": {"painted_metal": 0.4, "black_metal": 0.3, "neutral_plastic": 0.3},
                              "accent": {"chrome": 0.6, "brushed_metal": 0.4}}},
     "switch": {"families": {"main": {"neutral_plastic": 1.0}, "accent": {"neutral_plastic": 1.0}}},
+    "dispenser": {"groups": {"lid": "main"},
+                  "families": {"main": {"glossy_plastic": 0.5, "matte_plastic": 0.3, "neutral_plastic": 0.2},
+                               "accent": {"neutral_plastic": 0.5, "matte_plastic": 0.3, "glossy_plastic": 0.1,
+                                          "chrome": 0.1},
+                               "glass": {"glass": 1.0}}},
+    "shampoo": {"groups": {"lid": "accent"},
+                "families": {"main": {"glossy_plastic": 0.6, "matte_plastic": 0.4},
+                             "accent": {"glossy_plastic": 0.4, "matte_plastic": 0.3, "neutral_plastic": 0.3}}},
+    "shaver": {"groups": {"head": "accent"},
+               "families": {"main": {"neutral_plastic": 0.5, "matte_plastic": 0.3, "glossy_plastic": 0.2},
+                            "accent": {"neutral_plastic": 0.6, "chrome": 0.4}}},
 }
 
 
