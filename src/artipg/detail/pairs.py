@@ -110,8 +110,8 @@ def build_pair(structure: np.ndarray, semantic: np.ndarray, detailed: np.ndarray
     matched = np.stack([emd_match(s, d) for s, d in zip(structure, detailed)])
     projected = np.stack([d[cKDTree(d).query(s)[1]] for s, d in zip(structure, dense)])
     return {"structure": structure.astype(np.float32), "semantic": np.asarray(semantic, dtype=np.int32),
-            "detailed": matched.astype(np.float32), "projected": projected.astype(np.float32), "diagonal": np.float64(diagonal),
-            "category": np.array(category), "name": np.array(name),
+            "detailed": matched.astype(np.float32), "projected": projected.astype(np.float32),
+            "diagonal": np.float64(diagonal), "category": np.array(category), "name": np.array(name),
             "fit_chamfer": np.asarray(fit_chamfer if fit_chamfer is not None else np.full(len(structure), np.nan),
                                       dtype=np.float64)}
 
