@@ -11,7 +11,8 @@ augments each, structure and offsets alike, with a rigid and scale transform:
   size_jitter))`` (other sizes of the same shape).
 
 The loss is flow matching's (:meth:`artipg.detail.model.DetailNet.loss`); Adam with a
-cosine learning-rate decay. ``initial_loss`` and ``final_loss`` are measured on one
+cosine learning-rate decay over the run (over the steps, or over ``minutes`` of wall
+time when that runs out first: then the run is not deterministic in its length). ``initial_loss`` and ``final_loss`` are measured on one
 fixed, unaugmented batch with fixed noise, so they compare like with like.
 """
 
@@ -106,6 +107,20 @@ def _rows(X: np.ndarray, sub: np.ndarray) -> np.ndarray:
     return X[np.arange(len(X))[:, None], sub]
 
 
+def _progress(cfg: TrainConfig, step: int, seconds: float) -> float:
+    """Fraction of the run done: of the steps, or of the wall time when that is nearer its end."""
+    frac = step / max(cfg.steps, 1)
+    if cfg.minutes is not None:
+        frac = max(frac, seconds / (60.0 * cfg.minutes))
+    return frac
+
+
+def _cosine(cfg: TrainConfig, step: int, seconds: float) -> float:
+    """Learning rate: cosine decay from ``lr`` to 5 % of it over the run (steps or time)."""
+    f = min(_progress(cfg, step, seconds), 1.0)
+    return cfg.lr * (0.05 + 0.95 * 0.5 * (1.0 + np.cos(np.pi * f)))
+
+
 def _fixed_loss(net: DetailNet, P, O, D, seed: int) -> float:
     gen = torch.Generator().manual_seed(seed + 7919)
     with torch.no_grad():
@@ -147,7 +162,6 @@ def train(pairs, model_config: ModelConfig | None = None, cfg: TrainConfig | Non
     fP, fO, fD = _rows(P[fixed], sub), _rows(O[fixed], sub), D[fixed]
     initial = _fixed_loss(net, fP, fO, fD, cfg.seed)
     opt = torch.optim.Adam(net.parameters(), lr=cfg.lr)
-    sched = torch.optim.lr_scheduler.CosineAnnealingLR(opt, T_max=max(cfg.steps, 1), eta_min=cfg.lr * 0.05)
     start = time.perf_counter()
     losses, running, step = [], [], 0
     net.train()
@@ -159,14 +173,15 @@ def train(pairs, model_config: ModelConfig | None = None, cfg: TrainConfig | Non
         opt.zero_grad()
         loss.backward()
         opt.step()
-        sched.step()
+        for group in opt.param_groups:
+            group["lr"] = _cosine(cfg, step, time.perf_counter() - start)
         running.append(float(loss.detach()))
         if step % 25 == 0:
             losses.append(float(np.mean(running)))
             running = []
             if progress is not None:
                 progress(step, losses[-1])
-        if cfg.minutes is not None and time.perf_counter() - start > 60 * cfg.minutes:
+        if _progress(cfg, step, time.perf_counter() - start) >= 1.0:
             break
     seconds = time.perf_counter() - start
     net.eval()
