@@ -121,15 +121,18 @@ class DetailNet(nn.Module):
         return self.head(torch.cat([x, time_features(t, self.config.t_dim), cond], dim=-1))
 
     def loss(self, points: torch.Tensor, log_diag: torch.Tensor, offsets: torch.Tensor,
-             gen: torch.Generator) -> torch.Tensor:
+             gen: torch.Generator, weight: torch.Tensor | None = None) -> torch.Tensor:
         """Flow-matching loss of a batch: structure (B, N, 3), offsets (B, N, 3) in
-        diagonals; one flow time per point."""
+        diagonals, optional per-point weights (B, N); one flow time per point."""
         x1 = offsets / self.config.offset_scale
         x0 = torch.randn(x1.shape, generator=gen, dtype=x1.dtype)
         t = torch.rand(x1.shape[:2], generator=gen, dtype=x1.dtype)
         xt = (1 - t[..., None]) * x0 + t[..., None] * x1
         v = self.velocity(xt, t, self.encode(points, log_diag))
-        return ((v - (x1 - x0)) ** 2).mean()
+        err = ((v - (x1 - x0)) ** 2).mean(dim=-1)
+        if weight is None:
+            return err.mean()
+        return (err * weight).sum() / weight.sum().clamp_min(1.0)
 
     @torch.no_grad()
     def sample(self, points: torch.Tensor, log_diag: torch.Tensor, noise: torch.Tensor,

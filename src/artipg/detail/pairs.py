@@ -54,6 +54,7 @@ class Pair:
     diagonal: float
     category: str
     name: str
+    fit_chamfer: np.ndarray | None = None
 
     def offsets(self, target: str = "projected") -> np.ndarray:
         """(S, N, 3) float32 per-point offsets to the ``"projected"`` or ``"matched"``
@@ -241,7 +242,7 @@ def load_pairs(folder: Path, names: Iterable[str] | None = None) -> list[Pair]:
         try:
             with np.load(p) as z:
                 pairs.append(Pair(z["structure"], z["semantic"], z["detailed"], z["projected"], float(z["diagonal"]),
-                                  str(z["category"]), p.stem))
+                                  str(z["category"]), p.stem, z["fit_chamfer"] if "fit_chamfer" in z else None))
         except (KeyError, ValueError, OSError) as e:
             raise ValueError(f"{p}: not a pair file ({e})") from e
     return pairs

@@ -10,10 +10,15 @@ augments each, structure and offsets alike, with a rigid and scale transform:
 - the metric size (the ``log_diag`` condition) jittered by ``exp(U(-size_jitter,
   size_jitter))`` (other sizes of the same shape).
 
+Pairs whose twin fits the object poorly (``max_fit_chamfer``) are left out, and so are,
+from the loss, points whose offset is longer than ``max_offset``: both are differences of
+structure (a missing or misplaced part), which the fit, not the detail bridge, answers.
+
 The loss is flow matching's (:meth:`artipg.detail.model.DetailNet.loss`); Adam with a
 cosine learning-rate decay over the run (over the steps, or over ``minutes`` of wall
-time when that runs out first: then the run is not deterministic in its length). ``initial_loss`` and ``final_loss`` are measured on one
-fixed, unaugmented batch with fixed noise, so they compare like with like.
+time when that runs out first: then the run is not deterministic in its length).
+``initial_loss`` and ``final_loss`` are measured on one fixed, unaugmented batch with
+fixed noise, so they compare like with like.
 """
 
 from __future__ import annotations
@@ -51,6 +56,12 @@ class TrainConfig:
         Offsets to the projection on the real surface, or to the matched points.
     rotate_deg, scale, size_jitter : float
         Augmentation (module docstring).
+    max_fit_chamfer : float
+        Pairs whose fit (whole-object Chamfer-L1 at the closed state, diagonals) is worse
+        are left out: their twin differs from the object in structure, not in detail.
+    max_offset : float
+        Points whose target offset is longer (diagonals) are left out of the loss: a
+        part the twin lacks or misplaces, not detail.
     threads : int, optional
         torch intra-op threads (default: torch's).
     """
@@ -65,12 +76,15 @@ class TrainConfig:
     rotate_deg: float = 15.0
     scale: float = 0.15
     size_jitter: float = 0.3
+    max_fit_chamfer: float = 0.05
+    max_offset: float = 0.05
     threads: int | None = None
 
 
-def pair_arrays(pairs, target: str = "projected") -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Training clouds of pairs: structure (M, N, 3), offsets (M, N, 3) (diagonals) and
-    log metric diagonal (M,), one row per (pair, state)."""
+def pair_arrays(pairs, target: str = "projected", max_offset: float = np.inf):
+    """Training clouds of pairs: structure (M, N, 3), offsets (M, N, 3) (diagonals),
+    log metric diagonal (M,) and point weights (M, N) (0 where the offset is longer than
+    ``max_offset``), one row per (pair, state)."""
     if target not in ("projected", "matched"):
         raise ValueError(f"target must be 'projected' or 'matched', got {target!r}")
     sizes = {p.structure.shape[1] for p in pairs}
@@ -79,7 +93,8 @@ def pair_arrays(pairs, target: str = "projected") -> tuple[np.ndarray, np.ndarra
     P = np.concatenate([p.structure for p in pairs]).astype(np.float32)
     O = np.concatenate([p.offsets(target) for p in pairs]).astype(np.float32)
     D = np.concatenate([np.full(len(p.structure), np.log(p.diagonal)) for p in pairs]).astype(np.float32)
-    return P, O, D
+    W = (np.linalg.norm(O, axis=-1) <= max_offset).astype(np.float32)
+    return P, O, D, W
 
 
 def augment(rng: np.random.Generator, P: np.ndarray, O: np.ndarray, D: np.ndarray, cfg: TrainConfig):
@@ -121,10 +136,11 @@ def _cosine(cfg: TrainConfig, step: int, seconds: float) -> float:
     return cfg.lr * (0.05 + 0.95 * 0.5 * (1.0 + np.cos(np.pi * f)))
 
 
-def _fixed_loss(net: DetailNet, P, O, D, seed: int) -> float:
+def _fixed_loss(net: DetailNet, P, O, D, W, seed: int) -> float:
     gen = torch.Generator().manual_seed(seed + 7919)
     with torch.no_grad():
-        return float(net.loss(torch.from_numpy(P), torch.from_numpy(D), torch.from_numpy(O), gen))
+        return float(net.loss(torch.from_numpy(P), torch.from_numpy(D), torch.from_numpy(O), gen,
+                              torch.from_numpy(W)))
 
 
 def train(pairs, model_config: ModelConfig | None = None, cfg: TrainConfig | None = None,
@@ -146,11 +162,15 @@ def train(pairs, model_config: ModelConfig | None = None, cfg: TrainConfig | Non
     ``initial_loss`` / ``final_loss`` on a fixed batch, steps, seconds, pairs, configs)
     """
     cfg = cfg or TrainConfig()
-    P, O, D = pair_arrays(pairs, cfg.target)
+    used = [p for p in pairs if p.fit_chamfer is None or not np.isfinite(p.fit_chamfer[0])
+            or p.fit_chamfer[0] <= cfg.max_fit_chamfer]
+    if not used:
+        raise ValueError(f"no pair fits within max_fit_chamfer={cfg.max_fit_chamfer}")
+    P, O, D, W = pair_arrays(used, cfg.target, cfg.max_offset)
     mc = model_config or ModelConfig()
     n = min(int(cfg.points), P.shape[1])
     mc.points = n
-    mc.offset_scale = float(np.sqrt(np.mean(O.astype(np.float64) ** 2)) or 1.0)
+    mc.offset_scale = float(np.sqrt(np.mean(O[W > 0].astype(np.float64) ** 2)) if W.any() else 1.0) or 1.0
     if cfg.threads:
         torch.set_num_threads(int(cfg.threads))
     torch.manual_seed(cfg.seed)
@@ -159,8 +179,8 @@ def train(pairs, model_config: ModelConfig | None = None, cfg: TrainConfig | Non
     gen = torch.Generator().manual_seed(cfg.seed)
     fixed = np.sort(rng.choice(len(P), size=min(len(P), cfg.batch), replace=False))
     sub = _subsets(rng, len(fixed), P.shape[1], n)
-    fP, fO, fD = _rows(P[fixed], sub), _rows(O[fixed], sub), D[fixed]
-    initial = _fixed_loss(net, fP, fO, fD, cfg.seed)
+    fP, fO, fD, fW = _rows(P[fixed], sub), _rows(O[fixed], sub), D[fixed], _rows(W[fixed], sub)
+    initial = _fixed_loss(net, fP, fO, fD, fW, cfg.seed)
     opt = torch.optim.Adam(net.parameters(), lr=cfg.lr)
     start = time.perf_counter()
     losses, running, step = [], [], 0
@@ -169,7 +189,8 @@ def train(pairs, model_config: ModelConfig | None = None, cfg: TrainConfig | Non
         idx = rng.choice(len(P), size=cfg.batch, replace=len(P) < cfg.batch)
         sub = _subsets(rng, cfg.batch, P.shape[1], n)
         Pb, Ob, Db = augment(rng, _rows(P[idx], sub), _rows(O[idx], sub), D[idx], cfg)
-        loss = net.loss(torch.from_numpy(Pb), torch.from_numpy(Db), torch.from_numpy(Ob), gen)
+        loss = net.loss(torch.from_numpy(Pb), torch.from_numpy(Db), torch.from_numpy(Ob), gen,
+                        torch.from_numpy(_rows(W[idx], sub)))
         opt.zero_grad()
         loss.backward()
         opt.step()
@@ -186,7 +207,9 @@ def train(pairs, model_config: ModelConfig | None = None, cfg: TrainConfig | Non
     seconds = time.perf_counter() - start
     net.eval()
     history = {"losses": losses, "initial_loss": initial,
-               "final_loss": _fixed_loss(net, fP, fO, fD, cfg.seed),
-               "steps": step, "seconds": seconds, "pairs": [p.name for p in pairs],
+               "final_loss": _fixed_loss(net, fP, fO, fD, fW, cfg.seed),
+               "steps": step, "seconds": seconds, "pairs": [p.name for p in used],
+               "pairs_left_out": sorted({p.name for p in pairs} - {p.name for p in used}),
+               "points_in_loss": float(W.mean()),
                "train_config": asdict(cfg), "threads": torch.get_num_threads()}
     return net, history
