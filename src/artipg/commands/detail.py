@@ -102,12 +102,12 @@ def register(app: typer.Typer) -> None:
             net, hist = run(data, ModelConfig(bound=bound), cfg, progress=show)
         except ValueError as e:
             fail(str(e))
+        log = out.with_suffix(out.suffix + ".json")
         try:
             save_model(net, out, extra={"history": hist})
+            log.write_text(json.dumps(hist, indent=1) + "\n")
         except OSError as e:
             fail(f"cannot write {str(out)!r}: {e.strerror or e}")
-        typer.echo(f"{len(data)} pairs, {hist['steps']} steps in {hist['seconds']:.0f} s on "
+        typer.echo(f"{len(hist['pairs'])} of {len(data)} pairs used, {hist['steps']} steps in {hist['seconds']:.0f} s on "
                    f"{hist['threads']} threads: loss {hist['initial_loss']:.4f} -> {hist['final_loss']:.4f}; "
-                   f"wrote {out}")
-        log = out.with_suffix(out.suffix + ".json")
-        log.write_text(json.dumps({k: v for k, v in hist.items()}, indent=1) + "\n")
+                   f"wrote {out} and {log.name}")
