@@ -19,6 +19,7 @@ COMMAND_MODULES = (
     "artipg.commands.convert",
     "artipg.commands.view",
     "artipg.commands.fit",
+    "artipg.commands.detail",
 )
 
 app = typer.Typer(add_completion=False, no_args_is_help=True, pretty_exceptions_enable=False,

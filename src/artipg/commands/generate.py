@@ -78,6 +78,10 @@ def register(app: typer.Typer) -> None:
         address: str = typer.Option(None, "--address", show_default=False,
                                     help="Ray cluster to join, HOST:PORT or auto (without it: a local Ray "
                                          "instance with --workers CPUs)."),
+        detail: str = typer.Option("off", "--detail", help="Geometric detail of the points.npz cloud: off, or "
+                                                         "learned (needs --detail-model; docs/detail_learned.md)."),
+        detail_model: Path = typer.Option(None, "--detail-model", show_default=False,
+                                          help="With --detail learned: a model from 'artipg detail train'."),
     ) -> None:
         """Generate objects into OUT/<category>/<seed>/ and index them in OUT/index.jsonl.
 
@@ -110,6 +114,7 @@ def register(app: typer.Typer) -> None:
         if shards < 0:
             fail(f"--shards must be >= 0, got {shards}")
         _check_engine(engine, address)
+        _check_detail(detail, detail_model, points)
         from artipg.export.formats import DEFAULT_FORMATS, parse_formats
 
         try:
@@ -122,7 +127,8 @@ def register(app: typer.Typer) -> None:
             clean_stale_tmp(out / c)
         tasks = [(c, s) for c in cats for s in range(seed, seed + n)]
         opts = BuildOptions(str(out), n_points=points, views=views, validate=validate, simulate=sim, rgb=rgb,
-                            overwrite=overwrite, formats=fmts, actuators=actuators)
+                            overwrite=overwrite, formats=fmts, actuators=actuators, detail=detail,
+                            detail_model=str(detail_model.resolve()) if detail_model is not None else None)
         try:
             counts, errors, stopped = _run(tasks, opts, out, workers, quiet, engine, address)
         except RuntimeError as e:
@@ -171,6 +177,26 @@ def _write_shards(out: Path, per_shard: int) -> None:
 
 def _written(counts: Counter) -> int:
     return counts["new"] + counts["rebuilt"] + counts["rewritten"]
+
+
+def _check_detail(detail: str, model: Path | None, points: int) -> None:
+    """--detail and --detail-model: a known level, and a model that loads (one line otherwise)."""
+    if detail not in ("off", "learned"):
+        fail(f"--detail must be off or learned, got {detail!r}")
+    if detail != "learned":
+        if model is not None:
+            fail("--detail-model needs --detail learned")
+        return
+    if model is None:
+        fail("--detail learned needs --detail-model MODEL (see 'artipg detail train')")
+    if points == 0:
+        fail("--detail learned details the points.npz cloud: give --points > 0")
+    from artipg.detail.application import DetailModelError, load_detail_model
+
+    try:
+        load_detail_model(model)
+    except DetailModelError as e:
+        fail(str(e))
 
 
 def _check_engine(engine: str, address: str | None) -> None:

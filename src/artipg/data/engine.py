@@ -49,6 +49,11 @@ class BuildOptions:
         Position servos per joint in MJCF and USD.
     rgb : str, optional
         ``"studio"`` or ``"random"``: colour images of the views in ``views_rgb.npz``.
+    detail : str
+        ``"off"``, or ``"learned"``: ``points.npz`` holds the detailed cloud of the model
+        at ``detail_model`` (docs/detail_learned.md).
+    detail_model : str, optional
+        Path of the detail model.
     """
 
     out: str
@@ -61,6 +66,8 @@ class BuildOptions:
     formats: tuple | None = None
     actuators: bool = False
     rgb: str | None = None
+    detail: str = "off"
+    detail_model: str | None = None
 
 
 @dataclass
@@ -111,8 +118,13 @@ def build_one(category: str, seed: int, opts: BuildOptions) -> Outcome:
             status, reason = "rebuilt", check.status
     try:
         obj = artipg.generate(category, seed, validate=opts.validate, simulate=opts.validate and opts.simulate)
+        model = None
+        if opts.detail == "learned":
+            from artipg.detail.application import generation_model
+
+            model = generation_model(opts.detail_model)
         export_object(obj, dest, n_points=opts.n_points, overwrite=True, views=opts.views, formats=opts.formats,
-                      actuators=opts.actuators, rgb=opts.rgb)
+                      actuators=opts.actuators, rgb=opts.rgb, detail_model=model)
         annotation = json.loads((dest / ANNOTATION_NAME).read_bytes())
     except Exception as e:  # noqa: BLE001 - one object's failure must not stop a run of thousands
         return Outcome(category, seed, "error", f"{type(e).__name__}: {e}")

@@ -26,7 +26,7 @@ def point_arrays(obj, n_points: int, seed: int = 0, qpos=None, grasps=True) -> d
 
 
 def object_files(obj, n_points: int = 2048, views: int = 0, view_points: int = 2048, formats=None,
-                 actuators: bool = False, rgb: str | None = None) -> dict[str, bytes]:
+                 actuators: bool = False, rgb: str | None = None, detail_model=None) -> dict[str, bytes]:
     """All files of the object folder as {relative path: bytes}.
 
     ``views`` > 0 adds ``views.npz`` with that many partial views of ``view_points``
@@ -36,8 +36,9 @@ def object_files(obj, n_points: int = 2048, views: int = 0, view_points: int = 2
     ``actuators`` (see ``docs/formats.md``). ``rgb`` (``"studio"`` or ``"random"``
     lighting and background per view; needs Mitsuba 3, the ``render`` extra) adds
     ``views_rgb.npz``: a colour image of every partial view, pixel for pixel with its
-    label images. ``annotation.json`` comes last and lists every other file with its
-    size and hash.
+    label images. ``detail_model`` (a :class:`artipg.detail.application.DetailModel`)
+    replaces the cloud of ``points.npz`` by its detailed cloud (docs/detail_learned.md).
+    ``annotation.json`` comes last and lists every other file with its size and hash.
     """
     from artipg.annotate.arrays import view_arrays
     from artipg.annotate.grasps import world_grasps
@@ -54,7 +55,12 @@ def object_files(obj, n_points: int = 2048, views: int = 0, view_points: int = 2
 
         files.update(format_files(object_asset(obj, files["mobility.urdf"].decode(), meshes), formats, actuators))
     if n_points > 0:
-        files["points.npz"] = npz_bytes(point_arrays(obj, n_points, grasps=grasps))
+        arrays = point_arrays(obj, n_points, grasps=grasps)
+        if detail_model is not None:
+            from artipg.detail.application import detail_arrays
+
+            arrays = detail_arrays(detail_model, arrays, seed=obj.seed)[0]
+        files["points.npz"] = npz_bytes(arrays)
     if views > 0:
         varr = view_arrays(obj, views, view_points, seed=obj.seed)
         files["views.npz"] = npz_bytes(varr)
@@ -114,12 +120,13 @@ def _write_file(path: str, data: bytes) -> None:
 
 
 def export_object(obj, dest, n_points: int = 2048, overwrite: bool = False, views: int = 0, formats=None,
-                  actuators: bool = False, rgb: str | None = None) -> Path:
+                  actuators: bool = False, rgb: str | None = None, detail_model=None) -> Path:
     """Write the object folder of ``obj`` at ``dest`` (atomically); ``views`` > 0 adds
     ``views.npz`` with that many partial views; ``formats`` (names of
     :data:`artipg.export.formats.FORMATS`, default ``DEFAULT_FORMATS``) the simulator
     files beside the URDF."""
-    files = object_files(obj, n_points, views=views, formats=formats, actuators=actuators, rgb=rgb)
+    files = object_files(obj, n_points, views=views, formats=formats, actuators=actuators, rgb=rgb,
+                         detail_model=detail_model)
     return write_files_atomic(files, Path(dest), overwrite=overwrite)
 
 
