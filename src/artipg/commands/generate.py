@@ -14,7 +14,7 @@ import typer
 from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn, TimeRemainingColumn
 
 import artipg
-from artipg.commands import fail
+from artipg.commands import DETAIL_HELP, check_detail, fail
 
 
 def _check_out_dir(out: Path) -> None:
@@ -73,6 +73,7 @@ def register(app: typer.Typer) -> None:
                                     help="Files beside the URDF, of urdf,mjcf,usd,glb [default: urdf,mjcf] "
                                          "(see docs/formats.md)."),
         actuators: bool = typer.Option(False, "--actuators", help="Position servos per joint in MJCF and USD."),
+        detail: str = typer.Option("procedural", "--detail", help=DETAIL_HELP),
         engine: str = typer.Option("local", "--engine", help="local (process pool) or ray (a Ray cluster; "
                                                             "see docs/cluster.md)."),
         address: str = typer.Option(None, "--address", show_default=False,
@@ -110,6 +111,7 @@ def register(app: typer.Typer) -> None:
         if shards < 0:
             fail(f"--shards must be >= 0, got {shards}")
         _check_engine(engine, address)
+        detail = check_detail(detail)
         from artipg.export.formats import DEFAULT_FORMATS, parse_formats
 
         try:
@@ -122,7 +124,7 @@ def register(app: typer.Typer) -> None:
             clean_stale_tmp(out / c)
         tasks = [(c, s) for c in cats for s in range(seed, seed + n)]
         opts = BuildOptions(str(out), n_points=points, views=views, validate=validate, simulate=sim, rgb=rgb,
-                            overwrite=overwrite, formats=fmts, actuators=actuators)
+                            overwrite=overwrite, formats=fmts, actuators=actuators, detail=detail)
         try:
             counts, errors, stopped = _run(tasks, opts, out, workers, quiet, engine, address)
         except RuntimeError as e:

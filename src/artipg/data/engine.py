@@ -49,6 +49,8 @@ class BuildOptions:
         Position servos per joint in MJCF and USD.
     rgb : str, optional
         ``"studio"`` or ``"random"``: colour images of the views in ``views_rgb.npz``.
+    detail : str
+        Geometric detail level (:mod:`artipg.rules.detail`), as :func:`artipg.generate`.
     """
 
     out: str
@@ -61,6 +63,7 @@ class BuildOptions:
     formats: tuple | None = None
     actuators: bool = False
     rgb: str | None = None
+    detail: str = "procedural"
 
 
 @dataclass
@@ -110,7 +113,8 @@ def build_one(category: str, seed: int, opts: BuildOptions) -> Outcome:
                 return Outcome(category, seed, "kept", row=index_row(check.annotation, rel))
             status, reason = "rebuilt", check.status
     try:
-        obj = artipg.generate(category, seed, validate=opts.validate, simulate=opts.validate and opts.simulate)
+        obj = artipg.generate(category, seed, validate=opts.validate, simulate=opts.validate and opts.simulate,
+                              detail=opts.detail)
         export_object(obj, dest, n_points=opts.n_points, overwrite=True, views=opts.views, formats=opts.formats,
                       actuators=opts.actuators, rgb=opts.rgb)
         annotation = json.loads((dest / ANNOTATION_NAME).read_bytes())
