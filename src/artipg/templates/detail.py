@@ -15,7 +15,7 @@ import math
 
 import numpy as np
 
-from artipg.geometry import cuboid, cuboid_between, ring
+from artipg.geometry import cuboid, cuboid_between, cylinder, ring
 from artipg.geometry.lathe import lathe
 from artipg.geometry.rounded_box import rounded_box
 from artipg.geometry.transforms import translation
@@ -101,3 +101,38 @@ def lipped_wall(r_out: float, r_in: float, height: float, z0: float, lip: str, t
         loop = [(ri, 0.0, 0.0), (ro, 0.0, _QUARTER), (ro - e, e, 0.0), (ri, e, 0.0)]
         on = (0.0, 1.0, 1.0, 1.0)
     return [wall, lathe(loop, on=on, pose=translation(0, 0, z0 + hb), role=role)]
+
+
+#: Edge profiles of round boards and discs: both edges rounded, or the top edge
+#: bevelled (a 45-degree chamfer) and the bottom one eased.
+EDGE_PROFILES = {"round": 2.0, "bevel": 1.0}
+
+
+def edge_profile(p, t: float) -> tuple:
+    """``(top, bottom, bevel)``: the edge sizes (metres) of a round board ``t`` thick
+    (:func:`edge_radius` each) and whether the top edge is a chamfer; zeros with
+    detail off."""
+    style = p.detail_choice("edge_profile", EDGE_PROFILES, "round")
+    top = edge_radius(p, t, "edge_radius")
+    bottom = edge_radius(p, t, "bottom_radius", hi=0.004) if top > 0.0 else 0.0
+    return top, bottom, style == "bevel" and top > 0.0
+
+
+def rounded_disc(R: float, t: float, top: float, bottom: float, bevel: bool, pose: np.ndarray, role: str = ""):
+    """A disc of radius ``R`` and thickness ``t`` centred at ``pose`` (axis z) whose top
+    and bottom rims are rounded by ``top`` / ``bottom`` (metres; a 45-degree chamfer of
+    that size on top when ``bevel``); the plain cylinder when both are 0."""
+    if top <= 0.0 and bottom <= 0.0:
+        return cylinder(R, t, pose, role)
+    h = 0.5 * t
+    loop = [(0.0, -h, 0.0)]
+    if bottom > 0.0:
+        loop += [(R - bottom, -h, _QUARTER), (R, -h + bottom, 0.0)]
+    else:
+        loop += [(R, -h, 0.0)]
+    if top > 0.0:
+        loop += [(R, h - top, 0.0 if bevel else _QUARTER), (R - top, h, 0.0)]
+    else:
+        loop += [(R, h, 0.0)]
+    loop += [(0.0, h, 0.0)]
+    return lathe(loop, pose=pose, role=role)
