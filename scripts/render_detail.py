@@ -1,7 +1,7 @@
 """Detail pictures: per category, the same seeds without geometric detail (top rows)
 and with procedural detail (bottom rows), written to docs/images/detail/<category>.png.
 
-Each seed gets a whole view and a close-up of its upper front corner (a sphere of a tenth
+Each seed gets a whole view at rest and a close-up with its joints 60 % open of its upper front corner (a sphere of a tenth
 of the object's size, at least 2.5 cm), where rounded edges, lips and raised
 panels show.
 
@@ -22,9 +22,17 @@ from artipg.viz import BACKGROUND, _label_image, render_image, shade
 AZIMUTH, ELEVATION = 35.0, 28.0
 
 
+def opened(obj, frac: float = 0.6) -> np.ndarray:
+    """Joint vector with every movable joint at ``frac`` of its range (lids and doors
+    open, so rims and door edges show)."""
+    lim = obj.limits()
+    return lim[:, 0] + frac * (lim[:, 1] - lim[:, 0])
+
+
 def close_up(obj, width: int, height: int) -> np.ndarray:
-    """A shaded picture of the upper front corner of ``obj`` at rest (the corner of
-    its bounding box at -x, -y, +z pulled a quarter of the way to the centre)."""
+    """A shaded picture of the upper front corner of ``obj`` with its joints 60 % open
+    (the corner of its rest bounding box at -x, -y, +z, pulled 8 % of the way to the
+    centre)."""
     b = obj.bounds()
     c = 0.5 * (b[0] + b[1])
     corner = np.array([b[0, 0], b[0, 1], b[1, 2]])
@@ -32,7 +40,7 @@ def close_up(obj, width: int, height: int) -> np.ndarray:
     target = corner + 0.08 * (c - corner)
     target[2] = b[1, 2] - 0.02 * (b[1, 2] - b[0, 2])
     cam = orbit_camera(target, max(0.1 * size, 0.025), AZIMUTH, ELEVATION, width, height, 40.0)
-    view = render_view(obj, cam)
+    view = render_view(obj, cam, opened(obj))
     labels, _ = _label_image(obj, view, "semantic")
     light = -cam.pose[:3, 2] - 0.35 * cam.pose[:3, 1] - 0.25 * cam.pose[:3, 0]
     return shade(labels, view.normal, light / np.linalg.norm(light))

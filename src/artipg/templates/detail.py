@@ -69,7 +69,7 @@ def lip_style(p) -> str:
 
 
 def lipped_wall(r_out: float, r_in: float, height: float, z0: float, lip: str, taper: float = 0.0,
-                role: str = "wall") -> list:
+                role: str = "wall", max_lip: float = math.inf) -> list:
     """Primitives of a vessel wall from ``z0`` up ``height`` (radii ``r_out`` > ``r_in``
     at the bottom, both growing by ``taper`` to the top) whose top is a lip of style
     ``lip``.
