@@ -49,7 +49,7 @@ def cylindrical_shell(p, radius: float, height: float, wall: float | None = None
     t = p.uniform("wall", 0.002, 0.006, fixed=wall)
     bottom = max(t, p.uniform("bottom", 0.003, 0.01))
     prims = [cylinder(radius, bottom, translation(0, 0, bottom / 2), role="bottom"),
-             *lipped_wall(radius, radius - t, height - bottom, bottom, lip_style(p))]
+             *lipped_wall(radius, radius - t, height - bottom, bottom + (height - bottom) / 2, lip_style(p))]
     return Part("body", "cylindrical_shell", prims, anchors=_vessel_anchors(radius, height),
                 regions={"lift": Region(("wall",))})
 
@@ -62,7 +62,7 @@ def tapered_shell(p, radius: float, height: float, taper: float | None = None, w
     r0 = radius - tp  # outer radius at the bottom
     hw = height - bottom
     prims = [frustum(r0, r0 + tp * bottom / height, bottom, translation(0, 0, bottom / 2), role="bottom"),
-             *lipped_wall(r0 + tp * bottom / height, r0 + tp * bottom / height - t, hw, bottom, lip_style(p),
+             *lipped_wall(r0 + tp * bottom / height, r0 + tp * bottom / height - t, hw, bottom + hw / 2, lip_style(p),
                           taper=tp * hw / height)]
     return Part("body", "tapered_shell", prims, anchors=_vessel_anchors(radius, height),
                 regions={"lift": Region(("wall",))})

@@ -15,7 +15,7 @@ import math
 
 import numpy as np
 
-from artipg.geometry import cuboid, cuboid_between, cylinder, ring
+from artipg.geometry import cuboid, cuboid_between, frustum, ring
 from artipg.geometry.lathe import lathe
 from artipg.geometry.rounded_box import rounded_box
 from artipg.geometry.transforms import translation
@@ -68,11 +68,11 @@ def lip_style(p) -> str:
     return p.detail_choice("lip", LIPS, "flat")
 
 
-def lipped_wall(r_out: float, r_in: float, height: float, z0: float, lip: str, taper: float = 0.0,
+def lipped_wall(r_out: float, r_in: float, height: float, zc: float, lip: str, taper: float = 0.0,
                 role: str = "wall", max_lip: float = math.inf) -> list:
-    """Primitives of a vessel wall from ``z0`` up ``height`` (radii ``r_out`` > ``r_in``
-    at the bottom, both growing by ``taper`` to the top) whose top is a lip of style
-    ``lip``.
+    """Primitives of a vessel wall ``height`` tall centred at height ``zc`` (radii
+    ``r_out`` > ``r_in`` at the bottom, both growing by ``taper`` to the top) whose top
+    is a lip of style ``lip``.
 
     ``"flat"`` is the plain :func:`~artipg.geometry.ring`. Otherwise the ring stops
     ``e`` below the top (its top face, now inside, left out of the sampled surface)
@@ -80,12 +80,16 @@ def lipped_wall(r_out: float, r_in: float, height: float, z0: float, lip: str, t
     the wall's thickness t (``"round"``, e = t / 2), or a flat top e = 0.6 t high with
     its outer corner a quarter circle of radius e (``"eased"``). The lip has the
     ring's radii where it starts and rises straight, so it lies inside the sharp ring
-    (to within taper x e on a flaring wall) and its top is the sharp top.
+    (to within taper x e on a flaring wall) and its top is the sharp top. A wall
+    thicker than ``2 max_lip`` gets the eased lip with e at most ``max_lip``.
     """
     t = r_out - r_in
     if lip == "flat" or t <= 0.0:
-        return [ring(r_out, r_in, height, pose=translation(0, 0, z0 + height / 2), role=role, taper=taper)]
-    e = min(0.5 * t if lip == "round" else 0.6 * t, 0.45 * height)
+        return [ring(r_out, r_in, height, pose=translation(0, 0, zc), role=role, taper=taper)]
+    z0 = zc - 0.5 * height
+    if 0.5 * t > max_lip:
+        lip = "eased"
+    e = min(0.5 * t if lip == "round" else 0.6 * t, 0.45 * height, max_lip)
     hb = height - e
     k = taper / height
     wall = ring(r_out, r_in, hb, pose=translation(0, 0, z0 + hb / 2), role=role, taper=k * hb)
@@ -118,21 +122,25 @@ def edge_profile(p, t: float) -> tuple:
     return top, bottom, style == "bevel" and top > 0.0
 
 
-def rounded_disc(R: float, t: float, top: float, bottom: float, bevel: bool, pose: np.ndarray, role: str = ""):
-    """A disc of radius ``R`` and thickness ``t`` centred at ``pose`` (axis z) whose top
-    and bottom rims are rounded by ``top`` / ``bottom`` (metres; a 45-degree chamfer of
-    that size on top when ``bevel``); the plain cylinder when both are 0."""
+def rounded_disc(R: float, t: float, top: float, bottom: float, bevel: bool, pose: np.ndarray, role: str = "",
+                 R_top: float | None = None):
+    """A disc of radius ``R`` (``R_top`` at its top: a frustum) and thickness ``t``
+    centred at ``pose`` (axis z) whose top and bottom rims are rounded by ``top`` /
+    ``bottom`` (metres; a 45-degree chamfer of that size on top when ``bevel``); the
+    plain :func:`~artipg.geometry.frustum` when both are 0."""
+    Rt = R if R_top is None else R_top
     if top <= 0.0 and bottom <= 0.0:
-        return cylinder(R, t, pose, role)
+        return frustum(R, Rt, t, pose, role)
     h = 0.5 * t
+    k = (Rt - R) / t  # radius change per metre of height along the side
     loop = [(0.0, -h, 0.0)]
     if bottom > 0.0:
-        loop += [(R - bottom, -h, _QUARTER), (R, -h + bottom, 0.0)]
+        loop += [(R - bottom, -h, _QUARTER), (R + k * bottom, -h + bottom, 0.0)]
     else:
         loop += [(R, -h, 0.0)]
     if top > 0.0:
-        loop += [(R, h - top, 0.0 if bevel else _QUARTER), (R - top, h, 0.0)]
+        loop += [(Rt - k * top, h - top, 0.0 if bevel else _QUARTER), (Rt - top, h, 0.0)]
     else:
-        loop += [(R, h, 0.0)]
+        loop += [(Rt, h, 0.0)]
     loop += [(0.0, h, 0.0)]
     return lathe(loop, pose=pose, role=role)

@@ -42,7 +42,7 @@ def wall_radius(body: Part, z: float) -> float:
 
 
 def _body(template, radius, top_radius, height, wall, base, extra=(), lip=0.0, rim="flat") -> Part:
-    walls = lipped_wall(radius, radius - wall, height - base, base, rim, taper=top_radius - radius)
+    walls = lipped_wall(radius, radius - wall, height - base, (height + base) / 2, rim, taper=top_radius - radius)
     prims = [walls[0], cylinder(radius - 0.5 * wall, base, translation(0, 0, base / 2), role="bottom"), *extra,
              *walls[1:]]
     return Part("body", template, prims, anchors={"rim": (0.0, 0.0, height), "radii": (radius, top_radius, 0.0),

@@ -55,7 +55,7 @@ def _profile_walls(radii, heights, t, bottom, lip="flat"):
     last = len(radii) - 2
     for i, ((r0, z0), (r1, z1)) in enumerate(zip(zip(radii, heights), zip(radii[1:], heights[1:]))):
         h = z1 - z0
-        prims += lipped_wall(r0, r0 - t, h, z0, lip if i == last else "flat", taper=r1 - r0)
+        prims += lipped_wall(r0, r0 - t, h, z0 + h / 2, lip if i == last else "flat", taper=r1 - r0)
     return prims
 
 
@@ -84,7 +84,7 @@ def _kettle(name, p, radii, heights, opening, skirt):
     hc = max(p.uniform("collar", 0.003, 0.012), skirt + 0.0015 if skirt > 0 else 0.0)
     ro = min(opening, R - 0.008)
     prims.append(ring(R, ro, t, pose=translation(0, 0, H - t / 2), role="top"))
-    prims += lipped_wall(ro, ro - tc, hc + 0.0005, H - 0.0005, lip_style(p), role="rim")
+    prims += lipped_wall(ro, ro - tc, hc + 0.0005, H + hc / 2 - 0.00025, lip_style(p), role="rim")
     return Part("body", name, prims, anchors=_anchors(ro, H + hc) | {"shoulder": (R, 0.0, H)},
                 regions={"lift": Region(("wall",)), "grasp": Region(("wall",))})
 
