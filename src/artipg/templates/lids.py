@@ -28,12 +28,9 @@ _EDGE = np.array([[0.0, 0.0, 1.0, 0.0], [1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.
 _UP = np.array([0.0, 0.0, 1.0])
 
 
-def _disc(R: float, t: float, sides, z0: float = 0.0, role: str = "disc", edge: float = 0.0):
-    """A round (``sides`` None; its top rim rounded by ``edge``) or polygonal disc."""
+def _disc(R: float, t: float, sides, z0: float = 0.0, role: str = "disc"):
     T = translation(0, 0, z0 + t / 2)
-    if sides is None:
-        return rounded_disc(R, t, edge, 0.0, False, T, role=role)
-    return prism(R, t, int(sides), T, role=role)
+    return cylinder(R, t, T, role=role) if sides is None else prism(R, t, int(sides), T, role=role)
 
 
 def _apothem(R: float, sides) -> float:
@@ -78,8 +75,9 @@ def _base(p, radius, sides, skirt_p):
         g = R - wall - radius
         s = min(s, math.sqrt((g - 0.0005) * (2.0 * (R + radius) + g)))
         prims.append(ring(R, R - wall, s, pose=translation(0, 0, -s / 2), role="skirt"))
-    edge = edge_radius(p, t, "edge_radius", hi=0.003) if sides is None else 0.0
-    return R, t, s, [_disc(R, t, sides, edge=edge)] + prims
+    # the disc keeps its sharp rim: a rounded one (a lathe) reaches the simulators as
+    # a faceted hull that blocks tight kettle lids; the knob carries the detail
+    return R, t, s, [_disc(R, t, sides)] + prims
 
 
 def flat_lid(p, radius: float, sides: int | None = None) -> Part:
