@@ -99,7 +99,7 @@ def framed_door(p, width: float, height: float, thickness: float | None = None) 
     if p.detail_choice("centre", CENTRE_PANELS, "flat") == "raised":
         # the field rises to 1-3 mm behind the frame's face; its rounded edges read as the bevel
         panel_t = max(panel_t, t - p.detail_uniform("field_recess", 0.001, 0.003))
-        r = p.detail_uniform("field_radius", 0.25, 0.45) * panel_t
+        r = min(p.detail_uniform("field_radius", 0.25, 0.45) * panel_t, 0.006)
     else:
         r = edge_radius(p, panel_t, "inset_radius", hi=0.002)
     inner = rbox(panel_t, width - 2 * rail, height - 2 * rail, r, translation(-panel_t / 2, 0, 0), role="inset")
