@@ -172,3 +172,38 @@ def test_cli_detail_option(tmp_path):
     ok = runner.invoke(app, ["generate", "table", "-n", "1", "--out", str(tmp_path / "o"), "--detail", "off",
                              "--no-validate", "--points", "64", "-q"])
     assert ok.exit_code == 0, ok.output
+
+
+def test_choose_detail_and_the_detail_stream_on_a_toy_category():
+    from artipg.geometry import cuboid
+    from artipg.model.part import Part
+    from artipg.rules import Category, Slot
+
+    STYLES = {"a": 1.0, "b": 1.0}
+
+    def build(ctx):
+        size = ctx.p.uniform("size", 0.1, 0.2)
+        style = ctx.choose_detail("style", STYLES, "flat")
+        r = ctx.p.detail_uniform("r", 0.001, 0.002)
+        flag = ctx.p.detail_flag("f", 0.5)
+        link = ctx.builder.create_link("base")
+        link.add(Part("body", "toy", [cuboid(size, size, size)]))
+        return ctx.p.detail, style, r, flag
+
+    toy = Category("toy", {"only": 1.0}, (Slot("body", build),))
+    assert toy.with_detail("procedural") is toy and toy.with_detail("off") is toy.with_detail("off")
+    for seed in range(5):
+        off, on = toy.with_detail("off").generate(seed), toy.generate(seed)
+        assert off.params["body.size"].value == on.params["body.size"].value
+        assert set(on.params) - set(off.params) == {"body.style", "body.r", "body.f"}
+        assert on.templates["body"] == [on.params["body.style"].value] and "body" not in off.templates
+        assert 0.001 <= on.params["body.r"].value <= 0.002
+    # overrides reach detail draws like any other
+    assert toy.generate(0, {"body.style": "b"}).params["body.style"].value == "b"
+
+
+def test_validation_keeps_the_detail_level():
+    obj = artipg.generate("table", 1, validate=True, detail="off")
+    assert obj.report["ok"]
+    assert all(pr.params[3] == 0.0 for pr in _prims(obj) if pr.geom is BOX)
+    assert not any(n.endswith("edge_radius") for n in obj.params)
