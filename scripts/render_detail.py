@@ -1,9 +1,9 @@
 """Detail pictures: per category, the same seeds without geometric detail (top rows)
 and with procedural detail (bottom rows), written to docs/images/detail/<category>.png.
 
-Each seed gets a whole view at rest and a close-up with its joints 60 % open of its upper front corner (a sphere of a tenth
-of the object's size, at least 2.5 cm), where rounded edges, lips and raised
-panels show.
+Each seed gets a whole view at rest and a close-up of its upper front corner with its
+joints 60 % open (a sphere of a tenth of the object's size, at least 2.5 cm), where
+rounded edges, lips and raised panels show.
 
 Usage: python scripts/render_detail.py [--categories a b] [--seeds 4] [--out docs/images/detail]
 """

@@ -14,7 +14,7 @@ from __future__ import annotations
 import math
 
 
-from artipg.geometry import cuboid_between, cylinder, frustum, prism, ring
+from artipg.geometry import cuboid_between, cylinder, frustum, prism
 from artipg.geometry.transforms import rot_z, translation
 from artipg.model.part import Part, Region
 from artipg.templates.detail import edge_radius, lip_style, lipped_wall, rbox_between

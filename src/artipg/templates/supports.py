@@ -7,7 +7,7 @@ reaches up to ``height``, where the body's bottom rests. ``width`` (y) and ``dep
 
 from __future__ import annotations
 
-from artipg.geometry import cuboid, cuboid_between, cylinder, frustum
+from artipg.geometry import cylinder, frustum
 from artipg.geometry.transforms import translation
 from artipg.model.part import Part
 from artipg.templates.detail import edge_radius, rbox, rbox_between
@@ -22,7 +22,8 @@ def square_legs(p, depth: float, width: float, height: float) -> Part:
     s = p.uniform("leg_size", 0.025, 0.05)
     inset = s / 2 + p.uniform("inset", 0.0, 0.03)
     r = edge_radius(p, s)
-    prims = [rbox(s, s, height, r, translation(x, y, height / 2), role="leg") for x, y in _corners(depth, width, inset)]
+    prims = [rbox(s, s, height, r, translation(x, y, height / 2), role="leg")
+             for x, y in _corners(depth, width, inset)]
     return Part("leg", "square_legs", prims)
 
 
