@@ -1,5 +1,6 @@
-"""Procedural geometric detail shared by the templates: rounded panel edges and
-rounded vessel lips.
+"""Procedural geometric detail shared by the templates: rounded panel edges (boxes),
+rounded vessel lips, and discs with rounded or chamfered rims (board tops, knobs,
+lids, bar ends).
 
 Every size here is drawn through the recorder's ``detail_*`` methods
 (:mod:`artipg.rules.detail`): with detail off they return the sharp values (radius 0,
