@@ -11,12 +11,16 @@ speed drifts by 10-20 % the ratio moves less than the milliseconds.
 (b) is split into where its time goes: the patch table of the object (built once per
 object, cached) and the draw of 2048 points from it; the rest is (a).
 
-Usage: python benchmarks/bench_generate.py [--categories a b] [--seeds 200] [--cli-n 500]
+``--detail off|procedural`` times objects at that geometric detail level (default
+procedural, as ``artipg.generate``).
+
+Usage: python benchmarks/bench_generate.py [--categories a b] [--seeds 200] [--cli-n 500] [--detail off]
 """
 
 from __future__ import annotations
 
 import argparse
+import functools
 import os
 import shutil
 import subprocess
@@ -70,14 +74,22 @@ def main() -> None:
     ap.add_argument("--cli-category", default="storage_furniture")
     ap.add_argument("--clock", choices=("wall", "cpu"), default="wall",
                     help="wall time, or this process's CPU time (steadier on a shared machine)")
+    ap.add_argument("--detail", default="procedural", help="geometric detail level: procedural or off")
     args = ap.parse_args()
+    from artipg.rules.detail import parse_detail
+
+    try:
+        detail = parse_detail(args.detail)
+    except ValueError as e:
+        ap.error(str(e))
+    gen = functools.partial(artipg.generate, detail=detail)
     global CLOCK
     CLOCK = time.perf_counter if args.clock == "wall" else time.process_time
     cats = args.categories or artipg.categories()
     seeds = range(args.seeds)
     tmp = tempfile.mkdtemp(prefix="artipg-bench-")
     print(f"artipg {artipg.__version__}, {len(cats)} categories, medians over {args.seeds} seeds "
-          f"({args.export_seeds} for export), one process, {args.clock} clock")
+          f"({args.export_seeds} for export), one process, {args.clock} clock, detail {detail}")
     for s in range(5):
         reference_object(s)
     refs, ratios = [], []
@@ -88,18 +100,18 @@ def main() -> None:
     all_dof = []
     for c in cats:
         for s in range(5):  # warm caches and imports
-            artipg.generate(c, s).sample_points(2048)
-        a = _median_ms(lambda s: artipg.generate(c, s), seeds)
-        b, ref, ratio = _paired_median_ms(lambda s: artipg.generate(c, s).sample_points(2048), reference_object,
+            gen(c, s).sample_points(2048)
+        a = _median_ms(lambda s: gen(c, s), seeds)
+        b, ref, ratio = _paired_median_ms(lambda s: gen(c, s).sample_points(2048), reference_object,
                                           seeds)
         refs.append(ref)
         ratios.append(ratio)
-        objs = {s: artipg.generate(c, s) for s in seeds}
+        objs = {s: gen(c, s) for s in seeds}
         patches = _median_ms(lambda s: objs[s].primitive_table.families, seeds)
         draw = _median_ms(lambda s: objs[s].sample_points(2048), seeds)
-        e = _median_ms(lambda s: export_object(artipg.generate(c, s), os.path.join(tmp, c, str(s)), overwrite=True),
+        e = _median_ms(lambda s: export_object(gen(c, s), os.path.join(tmp, c, str(s)), overwrite=True),
                        range(args.export_seeds))
-        dof = np.array([artipg.generate(c, s).dof for s in seeds])
+        dof = np.array([gen(c, s).dof for s in seeds])
         all_dof.append(dof)
         worst_b = max(worst_b, b)
         joints = f"{dof.mean():.1f} / {np.median(dof):.0f} / {dof.max()}"
@@ -112,7 +124,7 @@ def main() -> None:
     if args.cli_n:
         out = os.path.join(tmp, "cli")
         cmd = [sys.executable, "-m", "artipg.cli", "generate", args.cli_category, "-n", str(args.cli_n),
-               "--out", out, "--workers", "2", "--quiet"]
+               "--out", out, "--workers", "2", "--quiet", "--detail", detail]
         t0 = time.perf_counter()
         subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
         dt = time.perf_counter() - t0

@@ -30,7 +30,7 @@ def get_category(name: str):
 
 
 def generate(category: str, seed: int = 0, overrides: dict | None = None, validate: bool = False,
-             simulate: bool = False):
+             simulate: bool = False, detail: str | None = None):
     """Generate the object of ``category`` for ``seed``.
 
     Parameters
@@ -50,6 +50,11 @@ def generate(category: str, seed: int = 0, overrides: dict | None = None, valida
         same geometry either way, one that fails is only repaired with ``validate``.
     simulate : bool
         With ``validate``, also require the pybullet / MuJoCo checks (the CLI's ``--sim``).
+    detail : {"procedural", "off"}, optional
+        Geometric detail (``docs/detail.md``): ``"procedural"`` (the default) rounds
+        edges, lips and handles and draws door styles as template options; ``"off"``
+        gives the sharp structure (sharp boxes, bare rims) with every other parameter
+        the same.
 
     Returns
     -------
@@ -57,13 +62,16 @@ def generate(category: str, seed: int = 0, overrides: dict | None = None, valida
     """
     if int(seed) < 0:
         raise ValueError(f"seed must be >= 0, got {seed}")
+    rule = get_category(category)
+    if detail is not None:
+        rule = rule.with_detail(detail)
     if validate:
         from artipg.validate import generate_valid
 
-        return generate_valid(get_category(category), int(seed), overrides, simulate=simulate)
+        return generate_valid(rule, int(seed), overrides, simulate=simulate)
     if simulate:
         raise ValueError("simulate=True needs validate=True")
-    return get_category(category).generate(int(seed), overrides)
+    return rule.generate(int(seed), overrides)
 
 
 __all__ = ["__version__", "categories", "generate", "get_category"]

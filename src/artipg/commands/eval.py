@@ -14,7 +14,7 @@ from rich.console import Console
 from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn, TimeRemainingColumn
 from rich.table import Table
 
-from artipg.commands import err_console, fail
+from artipg.commands import DETAIL_HELP, check_detail, err_console, fail
 
 console = Console(highlight=False)
 
@@ -180,6 +180,7 @@ def register(app: typer.Typer) -> None:
         no_fid: bool = typer.Option(False, "--no-fid", help="Skip FID."),
         seed: int = typer.Option(0, "--seed", help="Point-sampling seed."),
         quiet: bool = typer.Option(False, "--quiet", "-q", help="No progress bars."),
+        detail: str = typer.Option("procedural", "--detail", help="With --generate: " + DETAIL_HELP),
     ) -> None:
         """Compare a generated object set (folders, or --generate N on the fly) with a reference
         set, per category: COV, MMD and 1-NNA (Chamfer-L1), NND of each set, FID, and structure
@@ -189,6 +190,7 @@ def register(app: typer.Typer) -> None:
         from artipg.metrics.structure import summarize_structure
 
         _check_common(points, normalize, source, workers)
+        detail = check_detail(detail)
         ref_found = _find(reference, "reference")
         if (generated is None) == (generate is None):
             fail("give either --generated DIR or --generate N")
@@ -210,7 +212,7 @@ def register(app: typer.Typer) -> None:
             else:
                 enc = load_default_encoder()
         n_workers = workers or None
-        report = {"generated": str(generated), "reference": str(reference), "points": points,
+        report = {"generated": str(generated), "reference": str(reference), "points": points, "detail": detail,
                   "normalize": normalize, "distance": "chamfer_l1", "source": source, "seed": seed,
                   "fid_encoder": None if enc is None else str(encoder or "default"), "categories": {}}
         for label, gc, rc in pairs:
@@ -221,7 +223,7 @@ def register(app: typer.Typer) -> None:
                     continue
                 if generate:
                     res, g = _compare_draws(bar, gc, r, len(r) if generate == "match" else int(generate), draws, first_seed, pose, points, seed, normalize,
-                                            n_workers, enc)
+                                            n_workers, enc, detail)
                 else:
                     g = _load(bar, f"{gc} (generated)", gen[gc], points, source, seed, n_workers)
                     if len(g) < 1:
@@ -313,7 +315,8 @@ def _generated_pairs(n: str, draws: int, first_seed: int, pose: str, category: l
     return {c: None for c in wanted}, [(c, c, rc) for c, rc in zip(wanted, reference_category or wanted)], ref
 
 
-def _compare_draws(bar, category, r, n, draws, first_seed, pose, points, seed, normalize, workers, enc):
+def _compare_draws(bar, category, r, n, draws, first_seed, pose, points, seed, normalize, workers, enc,
+                   detail=None):
     """:func:`compare_sets` of ``draws`` disjoint blocks of ``n`` generated seeds against
     the reference set ``r``: the set metrics averaged over the blocks (``*_draws`` keep
     each block's value), the structure of all generated objects together."""
@@ -325,7 +328,7 @@ def _compare_draws(bar, category, r, n, draws, first_seed, pose, points, seed, n
         seeds = range(first_seed + k * n, first_seed + (k + 1) * n)
         job = bar.add_task(f"{category}: generating block {k + 1}/{draws}", total=n)
         g = generated_set(category, seeds, points, pose=pose, sampling_seed=seed,
-                          progress=lambda j: bar.advance(job, j))
+                          progress=lambda j: bar.advance(job, j), detail=detail)
         job = bar.add_task(f"{category}: Chamfer matrix {k + 1}/{draws}", total=len(g) + len(r))
         runs.append(compare_sets(g.points, r.points, normalize, "l1", workers, enc,
                                  progress=lambda j: bar.advance(job, j)))

@@ -14,7 +14,7 @@ import typer
 from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn, TimeRemainingColumn
 
 import artipg
-from artipg.commands import fail
+from artipg.commands import DETAIL_HELP, check_detail, fail
 
 
 def _check_out_dir(out: Path) -> None:
@@ -73,13 +73,14 @@ def register(app: typer.Typer) -> None:
                                     help="Files beside the URDF, of urdf,mjcf,usd,glb [default: urdf,mjcf] "
                                          "(see docs/formats.md)."),
         actuators: bool = typer.Option(False, "--actuators", help="Position servos per joint in MJCF and USD."),
+        detail: str = typer.Option("procedural", "--detail",
+                                   help=DETAIL_HELP[:-1] + ", or learned (the sharp structure, its points.npz "
+                                        "cloud detailed by --detail-model; docs/detail_learned.md)."),
         engine: str = typer.Option("local", "--engine", help="local (process pool) or ray (a Ray cluster; "
                                                             "see docs/cluster.md)."),
         address: str = typer.Option(None, "--address", show_default=False,
                                     help="Ray cluster to join, HOST:PORT or auto (without it: a local Ray "
                                          "instance with --workers CPUs)."),
-        detail: str = typer.Option("off", "--detail", help="Geometric detail of the points.npz cloud: off, or "
-                                                         "learned (needs --detail-model; docs/detail_learned.md)."),
         detail_model: Path = typer.Option(None, "--detail-model", show_default=False,
                                           help="With --detail learned: a model from 'artipg detail train'."),
     ) -> None:
@@ -114,7 +115,7 @@ def register(app: typer.Typer) -> None:
         if shards < 0:
             fail(f"--shards must be >= 0, got {shards}")
         _check_engine(engine, address)
-        _check_detail(detail, detail_model, points)
+        detail = _check_detail(detail, detail_model, points)
         from artipg.export.formats import DEFAULT_FORMATS, parse_formats
 
         try:
@@ -179,14 +180,13 @@ def _written(counts: Counter) -> int:
     return counts["new"] + counts["rebuilt"] + counts["rewritten"]
 
 
-def _check_detail(detail: str, model: Path | None, points: int) -> None:
-    """--detail and --detail-model: a known level, and a model that loads (one line otherwise)."""
-    if detail not in ("off", "learned"):
-        fail(f"--detail must be off or learned, got {detail!r}")
-    if detail != "learned":
+def _check_detail(detail: str, model: Path | None, points: int) -> str:
+    """--detail and --detail-model: a geometric level (procedural, off) or learned with a
+    model that loads; the level, or one line of error."""
+    if str(detail).strip().lower() != "learned":
         if model is not None:
             fail("--detail-model needs --detail learned")
-        return
+        return check_detail(detail)
     if model is None:
         fail("--detail learned needs --detail-model MODEL (see 'artipg detail train')")
     if points == 0:
@@ -197,6 +197,7 @@ def _check_detail(detail: str, model: Path | None, points: int) -> None:
         load_detail_model(model)
     except DetailModelError as e:
         fail(str(e))
+    return "learned"
 
 
 def _check_engine(engine: str, address: str | None) -> None:

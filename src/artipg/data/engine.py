@@ -50,8 +50,9 @@ class BuildOptions:
     rgb : str, optional
         ``"studio"`` or ``"random"``: colour images of the views in ``views_rgb.npz``.
     detail : str
-        ``"off"``, or ``"learned"``: ``points.npz`` holds the detailed cloud of the model
-        at ``detail_model`` (docs/detail_learned.md).
+        Geometric detail level (:mod:`artipg.rules.detail`), as :func:`artipg.generate`, or
+        ``"learned"``: the sharp structure (level ``"off"``), whose ``points.npz`` holds the
+        detailed cloud of the model at ``detail_model`` (docs/detail_learned.md).
     detail_model : str, optional
         Path of the detail model.
     """
@@ -66,7 +67,7 @@ class BuildOptions:
     formats: tuple | None = None
     actuators: bool = False
     rgb: str | None = None
-    detail: str = "off"
+    detail: str = "procedural"
     detail_model: str | None = None
 
 
@@ -117,9 +118,11 @@ def build_one(category: str, seed: int, opts: BuildOptions) -> Outcome:
                 return Outcome(category, seed, "kept", row=index_row(check.annotation, rel))
             status, reason = "rebuilt", check.status
     try:
-        obj = artipg.generate(category, seed, validate=opts.validate, simulate=opts.validate and opts.simulate)
+        learned = opts.detail == "learned"  # the bridge was trained on sharp structures
+        obj = artipg.generate(category, seed, validate=opts.validate, simulate=opts.validate and opts.simulate,
+                              detail="off" if learned else opts.detail)
         model = None
-        if opts.detail == "learned":
+        if learned:
             from artipg.detail.application import generation_model
 
             model = generation_model(opts.detail_model)

@@ -73,7 +73,8 @@ def object_structure(obj, qpos: dict | None = None) -> ObjectStructure:
 
 
 def generated_set(category: str, seeds: Sequence[int], n_points: int = 2048, pose: str = "rest",
-                  sampling_seed: int = 0, progress: Callable[[int], None] | None = None) -> ObjectSet:
+                  sampling_seed: int = 0, progress: Callable[[int], None] | None = None,
+                  detail: str | None = None) -> ObjectSet:
     """Generate ``category`` at ``seeds`` and sample one labelled cloud per object.
 
     Parameters
@@ -91,6 +92,8 @@ def generated_set(category: str, seeds: Sequence[int], n_points: int = 2048, pos
         Seed of the point sampling (the same for every object).
     progress : callable, optional
         Called with 1 after each object.
+    detail : {"procedural", "off"}, optional
+        Geometric detail level of the objects (None: the default, procedural).
 
     Returns
     -------
@@ -104,7 +107,7 @@ def generated_set(category: str, seeds: Sequence[int], n_points: int = 2048, pos
         raise ValueError(f"pose must be one of {POSES}, got {pose!r}")
     labels, clouds, links, names, structures = [], [], [], [], []
     for seed in seeds:
-        obj = artipg.generate(category, int(seed))
+        obj = artipg.generate(category, int(seed), detail=detail)
         q = partnet_qpos(obj, category) if pose == "partnet" else None
         pc = obj.sample_points(n_points, seed=sampling_seed, qpos=q)
         labels.append(f"{category}/{int(seed)}")

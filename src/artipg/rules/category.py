@@ -9,13 +9,14 @@ name), so adding or removing an optional part never changes the others.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from graphlib import TopologicalSorter
 from typing import Any, Callable
 
 from artipg.materials import CLASS_DENSITY
 from artipg.model.articulation import ArticulatedObject
 from artipg.model.builder import ObjectBuilder
+from artipg.rules.detail import DEFAULT_DETAIL, DetailStream, parse_detail
 from artipg.rules.params import ParamRecorder
 from artipg.rules.streams import stream, stream_key
 
@@ -60,6 +61,19 @@ class SlotContext:
         self.templates.setdefault(self.slot, []).append(chosen)
         return t
 
+    def choose_detail(self, name: str, options, off):
+        """Choose a detail template (weighted dict or list) from the slot's detail
+        stream and record it; ``off`` (not recorded) when detail is off."""
+        if self.p._fine is None:
+            return off
+        t, chosen = self.p._detail_recorder()._pick(name, options)
+        self.templates.setdefault(self.slot, []).append(chosen)
+        return t
+
+
+#: (id of a category, detail level) -> (category, its variant at that level)
+_VARIANTS: dict = {}
+
 
 @dataclass(frozen=True)
 class Category:
@@ -86,6 +100,9 @@ class Category:
         Plausible whole-object mass of real objects of the category, kg (generous:
         it catches a wrong material or a solid body that should be hollow, not
         small differences). The tests check every generated object against it.
+    detail : str
+        Geometric detail level of :meth:`generate` (:mod:`artipg.rules.detail`);
+        :meth:`with_detail` gives the same category at another level.
     """
 
     name: str
@@ -94,6 +111,7 @@ class Category:
     fixed_base: bool = False
     materials: dict = field(default_factory=dict)
     mass_range: tuple = (0.0, float("inf"))
+    detail: str = DEFAULT_DETAIL
     order: tuple = field(init=False)
     _keys: tuple = field(init=False, repr=False)
 
@@ -123,9 +141,25 @@ class Category:
                 ts.done(r)
         object.__setattr__(self, "order", tuple(order))
         object.__setattr__(self, "_keys", tuple(stream_key(s.name) for s in order))
+        object.__setattr__(self, "detail", parse_detail(self.detail))
 
-    def generate(self, seed: int, overrides: dict | None = None) -> ArticulatedObject:
-        """Build the object for ``seed`` (with optional parameter overrides)."""
+    def with_detail(self, detail: str | None) -> "Category":
+        """This category at detail level ``detail`` (None: the default); the variant is
+        made once and kept, so repeated calls cost a dict look-up."""
+        d = parse_detail(detail)
+        if d == self.detail:
+            return self
+        key = (id(self), d)
+        hit = _VARIANTS.get(key)
+        if hit is None or hit[0] is not self:
+            hit = _VARIANTS[key] = (self, replace(self, detail=d))
+        return hit[1]
+
+    def generate(self, seed: int, overrides: dict | None = None, detail: str | None = None) -> ArticulatedObject:
+        """Build the object for ``seed`` (with optional parameter overrides) at detail
+        level ``detail`` (None: :attr:`detail`)."""
+        mode = self.detail if detail is None else parse_detail(detail)
+        fine = mode != "off"
         record: dict = {}
         templates: dict = {}
         overrides = overrides or {}
@@ -135,7 +169,8 @@ class Category:
         out: dict = {}
         for slot, key in zip(self.order, self._keys):
             name = slot.name
-            ctx = SlotContext(ParamRecorder(stream(seed, key), record, overrides, name),
+            ctx = SlotContext(ParamRecorder(stream(seed, key), record, overrides, name,
+                                            DetailStream(mode, seed, key) if fine else None),
                               sub, out, builder, templates, name)
             out[name] = slot.build(ctx)
         obj = builder.build(self.name, sub, seed, record, templates)

@@ -7,6 +7,11 @@ number is always drawn, even when overridden, so overriding one parameter never
 shifts the stream of the others.
 
 Every draw takes exactly one double from the stream (``Generator.random()``).
+
+Geometric detail (rounded edges, rolled lips, door styles: :mod:`artipg.rules.detail`)
+is drawn through ``detail_uniform`` / ``detail_choice`` / ``detail_flag`` from a second
+stream of the slot, so switching detail off (``p.detail == "off"``: no detail draws,
+the "off" values) leaves every other parameter of the object unchanged.
 """
 
 from __future__ import annotations
@@ -15,6 +20,8 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
+
+from artipg.rules.detail import DetailStream
 
 
 @dataclass(init=False, slots=True)
@@ -95,19 +102,51 @@ class ParamRecorder:
         Prepended (with a dot) to every name.
     """
 
-    __slots__ = ("rng", "record", "overrides", "_prefix", "_dot")
+    __slots__ = ("rng", "record", "overrides", "_prefix", "_dot", "_fine")
 
     def __init__(self, rng: np.random.Generator, record: dict | None = None,
-                 overrides: dict | None = None, prefix: str = ""):
+                 overrides: dict | None = None, prefix: str = "", fine: DetailStream | None = None):
         self.rng = rng
         self.record = {} if record is None else record
         self.overrides = overrides or {}
         self._prefix = prefix
         self._dot = f"{prefix}." if prefix else ""  # each key is _dot + name
+        self._fine = fine
 
     def scope(self, name: str) -> "ParamRecorder":
-        """A recorder sharing stream and record, whose names are prefixed by ``name``."""
-        return ParamRecorder(self.rng, self.record, self.overrides, self._dot + name)
+        """A recorder sharing streams and record, whose names are prefixed by ``name``."""
+        return ParamRecorder(self.rng, self.record, self.overrides, self._dot + name, self._fine)
+
+    # ------------------------------------------------------------ geometric detail
+    @property
+    def detail(self) -> str:
+        """The object's detail level (:data:`artipg.rules.detail.DETAIL_LEVELS`):
+        ``"off"`` gives the sharp structure (no detail draws), ``"procedural"`` the
+        template options drawn by the ``detail_*`` methods."""
+        return "off" if self._fine is None else self._fine.mode
+
+    def _detail_recorder(self) -> "ParamRecorder":
+        return ParamRecorder(self._fine.rng, self.record, self.overrides, self._prefix)
+
+    def detail_uniform(self, name: str, lo: float, hi: float, off: float = 0.0) -> float:
+        """A detail size drawn uniformly in [lo, hi] from the detail stream and
+        recorded like :meth:`uniform`; ``off`` (not recorded) when detail is off."""
+        if self._fine is None:
+            return off
+        return self._detail_recorder().uniform(name, lo, hi)
+
+    def detail_choice(self, name: str, options, off):
+        """A detail option (a weighted dict or a sequence, as :meth:`choice`) from the
+        detail stream; ``off`` (not recorded) when detail is off."""
+        if self._fine is None:
+            return off
+        return self._detail_recorder().choice(name, options)
+
+    def detail_flag(self, name: str, p: float) -> bool:
+        """True with probability ``p`` from the detail stream; False when detail is off."""
+        if self._fine is None:
+            return False
+        return self._detail_recorder().flag(name, p)
 
     @property
     def prefix(self) -> str:

@@ -19,6 +19,7 @@ import numpy as np
 from artipg.geometry import cuboid, cuboid_between, cylinder, rect_ring
 from artipg.geometry.transforms import Placer, rot_y, translation
 from artipg.model.part import Deferred, Part, Region
+from artipg.templates.detail import edge_radius, rbox_between
 from artipg.templates.panels import door_edge_grasps
 
 _FRAME_TO_X = Placer(rot_y(np.pi / 2))  # rect ring's z (thickness) -> x
@@ -40,11 +41,12 @@ def appliance_housing(p, depth: float, width: float, height: float, bay_width: f
     yb = s * (W - bay_width)  # divider's cavity-side face
     lo_y, hi_y = sorted((-s * (W - w), yb))
     by0, by1 = sorted((yb, s * W))
+    r = edge_radius(p, w)  # the outer shell's edges (top, bottom, sides)
     prims = [
-        cuboid_between((-D, -W, -H), (D, W, -H + bot), role="bottom"),
-        cuboid_between((-D, -W, H - top), (D, W, H), role="top"),
-        cuboid_between((-D, -W, -H + bot), (D, -W + w, H - top), role="side"),
-        cuboid_between((-D, W - w, -H + bot), (D, W, H - top), role="side"),
+        rbox_between((-D, -W, -H), (D, W, -H + bot), r, role="bottom"),
+        rbox_between((-D, -W, H - top), (D, W, H), r, role="top"),
+        rbox_between((-D, -W, -H + bot - r), (D, -W + w, H - top + r), r, role="side"),
+        rbox_between((-D, W - w, -H + bot - r), (D, W, H - top + r), r, role="side"),
         cuboid_between((D - back, -W + w, -H + bot), (D, W - w, H - top), role="back"),
         cuboid_between((-D, min(yb, yb + s * w), -H + bot), (D - back, max(yb, yb + s * w), H - top), role="divider"),
         cuboid_between((-D, by0 + (w if s < 0 else 0), -H + bot), (-D + fw, by1 - (w if s > 0 else 0), H - top),

@@ -24,6 +24,7 @@ import numpy as np
 from artipg.geometry import cuboid, cuboid_between, cylinder, rect_ring, ring, sphere
 from artipg.geometry.transforms import Placer, rot_x, rot_y, translation
 from artipg.model.part import Part, Region
+from artipg.templates.detail import edge_radius, rounded_disc
 
 _Y = Placer(rot_x(math.pi / 2))  # local z -> -y
 _X = Placer(rot_y(math.pi / 2))  # local z -> +x
@@ -38,7 +39,9 @@ def _round_lid(template, prims, R, top) -> Part:
 def flat_disc_lid(p, radius: float, thickness: float | None = None) -> Part:
     """Flat round lid."""
     t = p.uniform("thickness", 0.008, 0.02, fixed=thickness)
-    return _round_lid("flat_disc_lid", [cylinder(radius, t, translation(-radius, 0, t / 2), role="top")], radius, t)
+    edge = edge_radius(p, t)
+    return _round_lid("flat_disc_lid", [rounded_disc(radius, t, edge, 0.0, False, translation(-radius, 0, t / 2),
+                                                     role="top")], radius, t)
 
 
 def domed_lid(p, radius: float, thickness: float | None = None) -> Part:
@@ -57,8 +60,9 @@ def stepped_lid(p, radius: float, thickness: float | None = None) -> Part:
     t = p.uniform("thickness", 0.006, 0.012, fixed=thickness)
     r2 = p.uniform("step_ratio", 0.6, 0.85) * radius
     t2 = p.uniform("step_height", 0.006, 0.02)
-    prims = [cylinder(radius, t, translation(-radius, 0, t / 2), role="top"),
-             cylinder(r2, t2, translation(-radius, 0, t + t2 / 2), role="top")]
+    e1, e2 = edge_radius(p, t), edge_radius(p, t2, "step_edge")
+    prims = [rounded_disc(radius, t, e1, 0.0, False, translation(-radius, 0, t / 2), role="top"),
+             rounded_disc(r2, t2, e2, 0.0, False, translation(-radius, 0, t + t2 / 2), role="top")]
     return _round_lid("stepped_lid", prims, radius, t + t2)
 
 

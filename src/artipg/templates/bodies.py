@@ -14,23 +14,26 @@ from __future__ import annotations
 import math
 
 
-from artipg.geometry import cuboid_between, cylinder, frustum, prism, ring
+from artipg.geometry import cuboid_between, cylinder, frustum, prism
 from artipg.geometry.transforms import rot_z, translation
 from artipg.model.part import Part, Region
+from artipg.templates.detail import edge_radius, lip_style, lipped_wall, rbox_between
 
 
 def carcass(p, depth: float, width: float, height: float, semantic: str = "body",
             wall: float | None = None, back: float | None = None) -> Part:
-    """Open-front box: back, two sides, top and bottom panels."""
+    """Open-front box: back, two sides, top and bottom panels (with detail, the
+    sides, top and bottom have rounded edges; the panels still meet face to face)."""
     w = p.uniform("wall", 0.015, 0.022, fixed=wall)
     b = p.uniform("back", 0.006, 0.012, fixed=back)
     D, W, H = depth / 2, width / 2, height / 2
+    r = edge_radius(p, w)
     prims = [
         cuboid_between((D - b, -W + w, -H + w), (D, W - w, H - w), role="back"),
-        cuboid_between((-D, -W, -H), (D, -W + w, H), role="side"),
-        cuboid_between((-D, W - w, -H), (D, W, H), role="side"),
-        cuboid_between((-D, -W + w, -H), (D, W - w, -H + w), role="bottom"),
-        cuboid_between((-D, -W + w, H - w), (D, W - w, H), role="top"),
+        rbox_between((-D, -W, -H), (D, -W + w, H), r, role="side"),
+        rbox_between((-D, W - w, -H), (D, W, H), r, role="side"),
+        rbox_between((-D, -W + w, -H), (D, W - w, -H + w), r, role="bottom"),
+        rbox_between((-D, -W + w, H - w), (D, W - w, H), r, role="top"),
     ]
     return Part(semantic, "carcass", prims,
                 anchors={"cavity_lo": (-D, -W + w, -H + w), "cavity_hi": (D - b, W - w, H - w),
@@ -46,8 +49,7 @@ def cylindrical_shell(p, radius: float, height: float, wall: float | None = None
     t = p.uniform("wall", 0.002, 0.006, fixed=wall)
     bottom = max(t, p.uniform("bottom", 0.003, 0.01))
     prims = [cylinder(radius, bottom, translation(0, 0, bottom / 2), role="bottom"),
-             ring(radius, radius - t, height - bottom, pose=translation(0, 0, bottom + (height - bottom) / 2),
-                  role="wall")]
+             *lipped_wall(radius, radius - t, height - bottom, bottom + (height - bottom) / 2, lip_style(p))]
     return Part("body", "cylindrical_shell", prims, anchors=_vessel_anchors(radius, height),
                 regions={"lift": Region(("wall",))})
 
@@ -60,8 +62,8 @@ def tapered_shell(p, radius: float, height: float, taper: float | None = None, w
     r0 = radius - tp  # outer radius at the bottom
     hw = height - bottom
     prims = [frustum(r0, r0 + tp * bottom / height, bottom, translation(0, 0, bottom / 2), role="bottom"),
-             ring(r0 + tp * bottom / height, r0 + tp * bottom / height - t, hw, taper=tp * hw / height,
-                  pose=translation(0, 0, bottom + hw / 2), role="wall")]
+             *lipped_wall(r0 + tp * bottom / height, r0 + tp * bottom / height - t, hw, bottom + hw / 2, lip_style(p),
+                          taper=tp * hw / height)]
     return Part("body", "tapered_shell", prims, anchors=_vessel_anchors(radius, height),
                 regions={"lift": Region(("wall",))})
 
@@ -78,13 +80,14 @@ def prism_shell(p, radius: float, height: float, sides: int | None = None, wall:
     side = 2 * radius * math.sin(math.pi / n)
     prims = [prism(radius, bottom, n, translation(0, 0, bottom / 2), role="bottom")]
     hw = height - bottom
+    r = edge_radius(p, t, hi=0.5 * t)  # the panels' outer corners meet: only a small rounding
     for i in range(n):
         a = 2 * math.pi * (i + 1) / n  # direction of the i-th edge's midpoint
         # full-length panels with their outer faces on the polygon edges: they meet at
         # the outer corners and overlap slightly inside, leaving no gap
         T = rot_z(a) @ translation(apothem - t / 2, 0.0, bottom + hw / 2)
-        prims.append(cuboid_between((-t / 2, -side / 2, -hw / 2), (t / 2, side / 2, hw / 2),
-                                    role="wall").placed(T))
+        prims.append(rbox_between((-t / 2, -side / 2, -hw / 2), (t / 2, side / 2, hw / 2), r,
+                                  role="wall").placed(T))
     return Part("body", "prism_shell", prims, anchors=_vessel_anchors(apothem, height),
                 regions={"lift": Region(("wall",))})
 

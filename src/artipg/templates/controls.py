@@ -35,6 +35,7 @@ import numpy as np
 from artipg.geometry import BOX, cuboid, frustum, prism, rect_ring, ring
 from artipg.geometry.transforms import Placer, rot_y, rot_z, translation
 from artipg.model.part import Deferred, Grasp, Part, Region
+from artipg.templates.detail import edge_radius, rbox, rounded_disc
 
 _ALONG_X = rot_y(math.pi / 2)    # local z -> +x (frustum r_bottom at the front, -x)
 _ALONG_X_PLACER = Placer(_ALONG_X)  # translation(x, y, z) @ _ALONG_X as _ALONG_X_PLACER.at(x, y, z)
@@ -46,11 +47,19 @@ _GRIP = Region(("grip",))  # regions are frozen: one object serves every knob
 _EYES = np.tile(np.eye(4), (32, 1, 1))  # translations for up to 32 mount frames (mount_poses)
 
 
-def _x_disc(r_back: float, r_front: float, x0: float, x1: float, role: str):
-    """Frustum along x from x0 (back, > x1) to x1 (front), radii at each end."""
+def _x_disc(r_back: float, r_front: float, x0: float, x1: float, role: str, edge: float = 0.0):
+    """Frustum along x from x0 (back, > x1) to x1 (front), radii at each end; its
+    front rim rounded by ``edge`` (metres)."""
     T = _ALONG_MX.copy()  # translation((x0 + x1) / 2, 0, 0) @ _ALONG_MX, bit for bit
     T[0, 3] = (x0 + x1) / 2
+    if edge > 0.0:
+        return rounded_disc(r_back, x0 - x1, edge, 0.0, False, T, role=role, R_top=r_front)
     return frustum(r_back, r_front, x0 - x1, T, role=role)
+
+
+def _knob_edge(p, size: float) -> float:
+    """Rounding (metres) of a knob grip's front rim (a softer grip), with detail."""
+    return edge_radius(p, size, "grip_edge", lo=0.0008, hi=0.004, share=0.3)
 
 
 def _knob_grasps(x_grip: float, width_y: float, width_z: float) -> list[Grasp]:
@@ -75,8 +84,9 @@ def round_knob(p, radius: float | None = None) -> Part:
     skirt = p.uniform("skirt_depth", 0.002, 0.005)
     rg = p.uniform("grip_ratio", 0.6, 0.9) * R
     d = p.uniform("grip_depth", 0.012, 0.025)
-    prims = [_x_disc(R, R, 0.0, -skirt, "skirt"), _x_disc(rg, rg * p.uniform("grip_taper", 0.85, 1.0), -skirt,
-                                                           -skirt - d, "grip")]
+    taper = p.uniform("grip_taper", 0.85, 1.0)
+    prims = [_x_disc(R, R, 0.0, -skirt, "skirt"),
+             _x_disc(rg, rg * taper, -skirt, -skirt - d, "grip", _knob_edge(p, min(d, rg)))]
     return _knob_part("round_knob", prims, -skirt - d / 2, 2 * rg, 2 * rg, skirt + d)
 
 
@@ -88,7 +98,7 @@ def pointer_knob(p, radius: float | None = None) -> Part:
     bar_d = p.uniform("bar_depth", 0.012, 0.022)
     bar_l = p.uniform("bar_length", 0.8, 0.95) * 2 * R
     prims = [_x_disc(R, R * p.uniform("base_taper", 0.85, 1.0), 0.0, -base, "base"),
-             cuboid(bar_d, bar_w, bar_l, translation(-base - bar_d / 2, 0, 0), role="grip")]
+             rbox(bar_d, bar_w, bar_l, _knob_edge(p, bar_w), translation(-base - bar_d / 2, 0, 0), role="grip")]
     return _knob_part("pointer_knob", prims, -base - bar_d / 2, bar_w, bar_l, base + bar_d)
 
 
@@ -109,7 +119,7 @@ def dial_knob(p, radius: float | None = None) -> Part:
     d = p.uniform("depth", 0.008, 0.015)
     ridge = p.uniform("ridge_depth", 0.003, 0.006)
     rf = p.uniform("front_ratio", 0.8, 0.95) * R
-    prims = [_x_disc(R, rf, 0.0, -d, "grip"),
+    prims = [_x_disc(R, rf, 0.0, -d, "grip", _knob_edge(p, d)),
              cuboid(ridge, 0.2 * rf, 1.6 * rf, translation(-d - ridge / 2, 0, 0), role="grip")]
     return _knob_part("dial_knob", prims, -d / 2, 2 * rf, 2 * rf, d + ridge)
 

@@ -18,6 +18,7 @@ from artipg.geometry import cuboid, cylinder, sphere, tube
 from artipg.geometry.tube import arc, line
 from artipg.geometry.transforms import Placer, rot_y, translation
 from artipg.model.part import Deferred, Grasp, Part, Region
+from artipg.templates.detail import edge_radius, rbox, rounded_disc
 
 _X_AXIS = Placer(rot_y(math.pi / 2))  # local z -> object x
 
@@ -53,7 +54,8 @@ def bar_handle(p, length: float | None = None) -> Part:
     standoff = p.uniform("standoff", 0.025, 0.045)
     inset = p.uniform("post_inset", 0.0, 0.25) * L / 2
     x_bar = -standoff
-    prims = [cylinder(r, L, translation(x_bar, 0, 0), role="grip")]
+    e = p.detail_uniform("end_round", 0.3, 0.8) * r  # domed bar ends, with detail
+    prims = [rounded_disc(r, L, e, e, False, translation(x_bar, 0, 0), role="grip")]
     for s in (-1.0, 1.0):
         T = _X_AXIS.at(x_bar / 2 + r / 2, 0, s * (L / 2 - inset - post_r))  # spans x in [x_bar + r, 0]
         prims.append(cylinder(post_r, standoff - r, T, role="post"))
@@ -84,7 +86,8 @@ def flat_bar_handle(p, length: float | None = None) -> Part:
     t = p.uniform("bar_thickness", 0.008, 0.014)
     w = p.uniform("bar_width", 0.012, 0.025)
     standoff = p.uniform("standoff", 0.025, 0.04)
-    prims = [cuboid(t, w, L, translation(-standoff + t / 2, 0, 0), role="grip")]
+    prims = [rbox(t, w, L, edge_radius(p, t, hi=0.004, share=0.4), translation(-standoff + t / 2, 0, 0),
+                  role="grip")]
     for s in (-1.0, 1.0):
         prims.append(cuboid(standoff - t, w * 0.8, w * 0.8, translation(-(standoff - t) / 2, 0, s * (L / 2 - w / 2)),
                             role="post"))
@@ -99,8 +102,9 @@ def knob_pull(p, length: float | None = None) -> Part:
     stem_r = p.uniform("stem_radius", 0.35, 0.6) * R
     stem = p.uniform("stem_length", 0.012, 0.025)
     head = p.uniform("head_height", 0.3, 0.8) * R
+    e = edge_radius(p, head, "head_edge", lo=0.001, hi=0.005, share=0.4)  # rounded front rim, with detail
     prims = [cylinder(stem_r, stem, _X_AXIS.at(-stem / 2, 0, 0), role="stem"),
-             cylinder(R, head, _X_AXIS.at(-stem - head / 2, 0, 0), role="grip")]
+             rounded_disc(R, head, e, 0.0, False, _X_AXIS.at(-stem - head / 2, 0, 0), role="grip")]
     return Part("handle", "knob_pull", prims, regions={"grasp": Region(("grip",)), "pull": Region(("grip",))},
                 grasps=Deferred.one(front_grasp, -stem - head / 2, 0.0, 0.0, 2 * R + 0.02),
                 actionable="round_fixed_handle")
@@ -124,8 +128,9 @@ def edge_pull(p, length: float | None = None) -> Part:
     t = p.uniform("thickness", 0.004, 0.008)
     reach = p.uniform("reach", 0.02, 0.035)
     lip = p.uniform("lip", 0.012, 0.025)
+    e = edge_radius(p, t, hi=0.003)
     prims = [cuboid(reach, t, L, translation(-reach / 2, 0, 0), role="mount"),
-             cuboid(t, lip, L, translation(-reach + t / 2, -lip / 2 + t / 2, 0), role="grip")]
+             rbox(t, lip, L, e, translation(-reach + t / 2, -lip / 2 + t / 2, 0), role="grip")]
     return Part("handle", "edge_pull", prims, regions={"grasp": Region(("grip",)), "pull": Region(("grip",))},
                 grasps=Deferred(_thirds_grasps, -reach + t / 2, t / 2 - lip / 2, L, lip + 0.02),
                 actionable="line_fixed_handle")

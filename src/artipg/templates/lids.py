@@ -20,6 +20,7 @@ import numpy as np
 from artipg.geometry import cuboid, cylinder, prism, ring, sphere
 from artipg.geometry.transforms import translation
 from artipg.model.part import Deferred, Grasp, Part, Region
+from artipg.templates.detail import edge_radius, rounded_disc
 from artipg.templates.levers import top_grasp
 
 # gripper approaching +x (the lid's front edge), jaws closing along z (pinch)
@@ -74,6 +75,8 @@ def _base(p, radius, sides, skirt_p):
         g = R - wall - radius
         s = min(s, math.sqrt((g - 0.0005) * (2.0 * (R + radius) + g)))
         prims.append(ring(R, R - wall, s, pose=translation(0, 0, -s / 2), role="skirt"))
+    # the disc keeps its sharp rim: a rounded one (a lathe) reaches the simulators as
+    # a faceted hull that blocks tight kettle lids; the knob carries the detail
     return R, t, s, [_disc(R, t, sides)] + prims
 
 
@@ -100,8 +103,10 @@ def _knob(p, z0: float):
     hs = p.uniform("stem_height", 0.008, 0.02)
     rk = p.uniform("knob_radius", 1.3, 2.2) * rs
     hk = p.uniform("knob_height", 0.01, 0.02)
+    # with detail the cap's top rim is rounded (a softer grip), up to 40 % of its height
+    e = edge_radius(p, hk, "knob_edge", lo=0.001, hi=0.005, share=0.4)
     prims = [cylinder(rs, hs + 0.001, translation(0, 0, z0 + hs / 2 - 0.0005), role="stem"),
-             cylinder(rk, hk, translation(0, 0, z0 + hs + hk / 2), role="knob")]
+             rounded_disc(rk, hk, e, 0.0, False, translation(0, 0, z0 + hs + hk / 2), role="knob")]
     return prims, z0 + hs + hk, Deferred(_knob_grasps, z0 + hs + hk / 2, rk)
 
 

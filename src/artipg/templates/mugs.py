@@ -27,6 +27,7 @@ import numpy as np
 from artipg.geometry import cuboid, cuboid_between, cylinder, frustum, ring, sphere, torus
 from artipg.geometry.transforms import Placer, rot_x, rot_z, translation
 from artipg.model.part import Deferred, Grasp, Part, Region
+from artipg.templates.detail import lip_style, lipped_wall
 
 _LOOP = rot_x(math.pi / 2) @ rot_z(-math.pi / 2)  # torus x-y plane -> x-z plane, arc from -z round +x
 _ALONG_Y = Placer(rot_x(-math.pi / 2))  # local z -> +y
@@ -40,10 +41,10 @@ def wall_radius(body: Part, z: float) -> float:
     return r0 + (r1 - r0) * z / body.anchors["rim"][2]
 
 
-def _body(template, radius, top_radius, height, wall, base, extra=(), lip=0.0) -> Part:
-    prims = [ring(radius, radius - wall, height - base, pose=translation(0, 0, (height + base) / 2),
-                  taper=top_radius - radius, role="wall"),
-             cylinder(radius - 0.5 * wall, base, translation(0, 0, base / 2), role="bottom"), *extra]
+def _body(template, radius, top_radius, height, wall, base, extra=(), lip=0.0, rim="flat") -> Part:
+    walls = lipped_wall(radius, radius - wall, height - base, (height + base) / 2, rim, taper=top_radius - radius)
+    prims = [walls[0], cylinder(radius - 0.5 * wall, base, translation(0, 0, base / 2), role="bottom"), *extra,
+             *walls[1:]]
     return Part("body", template, prims, anchors={"rim": (0.0, 0.0, height), "radii": (radius, top_radius, 0.0),
                                                   "wall": (wall, 0.0, 0.0),
                                                   "lip": (top_radius + lip, 0.0, height)},
@@ -53,13 +54,14 @@ def _body(template, radius, top_radius, height, wall, base, extra=(), lip=0.0) -
 def straight_body(p, radius: float, height: float) -> Part:
     """Straight cylindrical wall on a flat bottom."""
     return _body("straight_body", radius, radius, height, p.uniform("wall", 0.003, 0.006),
-                 p.uniform("base", 0.005, 0.01))
+                 p.uniform("base", 0.005, 0.01), rim=lip_style(p))
 
 
 def conical_body(p, radius: float, height: float) -> Part:
     """Wall widening towards the rim (``radius`` at the bottom)."""
     top = radius + p.uniform("flare", 0.08, 0.25) * radius
-    return _body("conical_body", radius, top, height, p.uniform("wall", 0.003, 0.006), p.uniform("base", 0.005, 0.01))
+    return _body("conical_body", radius, top, height, p.uniform("wall", 0.003, 0.006), p.uniform("base", 0.005, 0.01),
+                 rim=lip_style(p))
 
 
 def banded_body(p, radius: float, height: float) -> Part:
@@ -69,7 +71,7 @@ def banded_body(p, radius: float, height: float) -> Part:
     hf, hr = p.uniform("foot", 0.01, 0.02), p.uniform("rim_band", 0.006, 0.012)
     extra = [ring(radius + band, radius - 0.001, hf, pose=translation(0, 0, hf / 2), role="foot"),
              ring(radius + band, radius - 0.001, hr, pose=translation(0, 0, height - 0.004 - hr / 2), role="band")]
-    return _body("banded_body", radius, radius, height, wall, base, extra, lip=band)
+    return _body("banded_body", radius, radius, height, wall, base, extra, lip=band, rim=lip_style(p))
 
 
 BODIES = {straight_body: 2.0, conical_body: 1.0, banded_body: 1.0}

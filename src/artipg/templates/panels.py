@@ -14,6 +14,7 @@ import numpy as np
 from artipg.geometry import cuboid, cuboid_between, rect_ring
 from artipg.geometry.transforms import Placer, rot_y, translation
 from artipg.model.part import Deferred, Grasp, Part, Region
+from artipg.templates.detail import edge_radius, rbox, rbox_between
 
 _FRAME_TO_X = Placer(rot_y(np.pi / 2))  # rect ring's z (thickness) -> x
 
@@ -71,23 +72,37 @@ def _front_regions(t, w, h, edge=0.25):
 
 
 def slab_door(p, width: float, height: float, thickness: float | None = None) -> Part:
-    """Plain flat door panel."""
+    """Plain flat door panel (edges rounded with detail)."""
     t = p.uniform("thickness", 0.012, 0.025, fixed=thickness)
-    part = Part("door", "slab_door", [cuboid(t, width, height, translation(-t / 2, 0, 0), role="panel")],
+    r = edge_radius(p, t)
+    part = Part("door", "slab_door", [rbox(t, width, height, r, translation(-t / 2, 0, 0), role="panel")],
                 anchors=_front_anchors(t, width, height), regions=_front_regions(t, width, height),
                 grasps=Deferred(door_edge_grasps, t, width, height), actionable="hinge_door")
     return part
 
 
+#: Centre panel styles of a framed door (a detail choice): the flat recessed panel of
+#: a shaker door, or a raised field (a thicker panel with rounded edges, its face
+#: still behind the frame's).
+CENTRE_PANELS = {"flat": 1.0, "raised": 1.0}
+
+
 def framed_door(p, width: float, height: float, thickness: float | None = None) -> Part:
-    """Shaker-style door: a frame (stiles and rails) around a recessed centre panel."""
+    """Shaker-style door: a frame (stiles and rails) around a recessed centre panel;
+    with detail, the centre panel is flat or a raised field (:data:`CENTRE_PANELS`)."""
     t = p.uniform("thickness", 0.016, 0.025, fixed=thickness)
     rail = p.uniform("rail_width", 0.04, 0.09) * min(1.0, min(width, height) / 0.4)
     rail = min(rail, 0.3 * min(width, height))
     panel_t = p.uniform("panel_thickness", 0.3, 0.6) * t
     frame = rect_ring(height, width, t, height - 2 * rail, width - 2 * rail,
                       _FRAME_TO_X.at(-t / 2, 0, 0), role="panel")
-    inner = cuboid(panel_t, width - 2 * rail, height - 2 * rail, translation(-panel_t / 2, 0, 0), role="inset")
+    if p.detail_choice("centre", CENTRE_PANELS, "flat") == "raised":
+        # the field rises to 1-3 mm behind the frame's face; its rounded edges read as the bevel
+        panel_t = max(panel_t, t - p.detail_uniform("field_recess", 0.001, 0.003))
+        r = min(p.detail_uniform("field_radius", 0.25, 0.45) * panel_t, 0.006)
+    else:
+        r = edge_radius(p, panel_t, "inset_radius", hi=0.002)
+    inner = rbox(panel_t, width - 2 * rail, height - 2 * rail, r, translation(-panel_t / 2, 0, 0), role="inset")
     return Part("door", "framed_door", [frame, inner], anchors=_front_anchors(t, width, height),
                 regions=_front_regions(t, width, height), grasps=Deferred(door_edge_grasps, t, width, height),
                 actionable="hinge_door")
@@ -131,7 +146,7 @@ def box_drawer(p, width: float, height: float, depth: float, opening=None, thick
     t = p.uniform("front_thickness", 0.015, 0.025, fixed=thickness)
     wall = p.uniform("wall", 0.008, 0.014)
     frac = p.uniform("box_height", 0.6, 0.95)
-    prims = [cuboid(t, width, height, translation(-t / 2, 0, 0), role="panel")]
+    prims = [rbox(t, width, height, edge_radius(p, t), translation(-t / 2, 0, 0), role="panel")]
     prims += _drawer_box(wall, depth, opening or _default_opening(width, height), frac)
     front = np.array([[-t - 1e-4, -width / 2, -height / 2], [-t + 1e-4, width / 2, height / 2]])
     return Part("drawer", "box_drawer", prims, anchors=_front_anchors(t, width, height),
@@ -147,10 +162,11 @@ def slot_drawer(p, width: float, height: float, depth: float, opening=None, thic
     slot = min(p.uniform("slot_height", 0.02, 0.035), 0.3 * height)
     frac = p.uniform("box_height", 0.5, 0.8)
     h2, w2 = height / 2, width / 2
+    r = edge_radius(p, min(t, slot))
     prims = [
-        cuboid_between((-t, -w2, -h2), (0.0, w2, h2 - slot), role="panel"),
-        cuboid_between((-t, -w2, h2 - slot), (0.0, -w2 / 2, h2), role="panel"),
-        cuboid_between((-t, w2 / 2, h2 - slot), (0.0, w2, h2), role="panel"),
+        rbox_between((-t, -w2, -h2), (0.0, w2, h2 - slot), r, role="panel"),
+        rbox_between((-t, -w2, h2 - slot - r), (0.0, -w2 / 2, h2), r, role="panel"),
+        rbox_between((-t, w2 / 2, h2 - slot - r), (0.0, w2, h2), r, role="panel"),
     ]
     op = opening or _default_opening(width, height)
     op = (op[0], op[1], op[2], min(op[3], h2 - slot - 0.005))

@@ -20,6 +20,7 @@ import numpy as np
 from artipg.geometry import cuboid, cuboid_between, cylinder, frustum, prism
 from artipg.geometry.transforms import rot_z, translation
 from artipg.model.part import Part, Region
+from artipg.templates.detail import edge_profile, edge_radius, rbox, rounded_disc
 
 _SQRT_HALF = math.sqrt(0.5)
 _CROSS = (rot_z(math.pi / 4), rot_z(-math.pi / 4))  # the two bars of a cross foot
@@ -39,7 +40,8 @@ def slab_top(p, depth: float, width: float, thickness: float | None = None) -> P
     """Rectangular board ``depth`` (x) by ``width`` (y)."""
     t = p.uniform("thickness", 0.02, 0.045, fixed=thickness)
     ov = _overhang(p, depth, width)
-    return _top("slab_top", [cuboid(depth, width, t, translation(0, 0, t / 2), role="top")],
+    r = edge_radius(p, t)
+    return _top("slab_top", [rbox(depth, width, t, r, translation(0, 0, t / 2), role="top")],
                 depth / 2 - ov, width / 2 - ov, t)
 
 
@@ -61,7 +63,8 @@ def round_top(p, depth: float, width: float, thickness: float | None = None) -> 
     t = p.uniform("thickness", 0.02, 0.045, fixed=thickness)
     r = min(depth, width) / 2
     a = (r - _overhang(p, depth, width)) * _SQRT_HALF
-    return _top("round_top", [cylinder(r, t, translation(0, 0, t / 2), role="top")], a, a, t)
+    edge = edge_profile(p, t)
+    return _top("round_top", [rounded_disc(r, t, *edge, translation(0, 0, t / 2), role="top")], a, a, t)
 
 
 def polygon_top(p, depth: float, width: float, thickness: float | None = None) -> Part:

@@ -21,6 +21,7 @@ from artipg.geometry import cuboid, cylinder, frustum, sphere, tube
 from artipg.geometry.tube import arc, line
 from artipg.geometry.transforms import Placer, rot_x, rot_y, translation
 from artipg.model.part import Deferred, Grasp, Part, Region
+from artipg.rules.params import option_name
 
 _X = Placer(rot_y(-math.pi / 2))  # local z -> -x
 _Y = Placer(rot_x(-math.pi / 2))  # local z -> +y
@@ -234,6 +235,25 @@ class _Replay:
 
     def flag(self, name, prob, fixed=None):
         return bool(self._value(name, fixed))
+
+    # detail draws (:mod:`artipg.rules.detail`): the recorded value, or the "off" value
+    # where the first build drew none (detail off)
+    def _detail(self, name):
+        return self.record.get(f"{self.prefix}.{name}" if self.prefix else name)
+
+    def detail_uniform(self, name, lo, hi, off=0.0):
+        rec = self._detail(name)
+        return off if rec is None else float(rec.value)
+
+    def detail_choice(self, name, options, off):
+        rec = self._detail(name)
+        if rec is None:
+            return off
+        return next(o for o in options if option_name(o) == rec.value)
+
+    def detail_flag(self, name, prob):
+        rec = self._detail(name)
+        return False if rec is None else bool(rec.value)
 
 
 def replay(p) -> _Replay:

@@ -17,19 +17,23 @@ from artipg.geometry import frustum, ring
 from artipg.geometry.lathe import ring_dims
 from artipg.geometry.transforms import translation
 from artipg.model.part import Part, Region
+from artipg.templates.detail import lip_style, lipped_wall
 
 
 def wall_radius(part: Part, z: float) -> float:
     """Outer radius (metres) of a vessel's wall at height ``z`` of its frame, read from
-    its ``"wall"`` rings (the largest one covering z; 0 where there is none)."""
+    its ``"wall"`` rings (the largest one covering z; 0 where there is none). A ring
+    under a rounded lip (its top face left out of the surface,
+    :func:`artipg.templates.detail.lipped_wall`) covers the lip's height too."""
     r = 0.0
     for pr in part.primitives:
         dims = ring_dims(pr) if pr.role == "wall" else None
         if dims is None:
             continue
-        ro, _, h, _, tp = dims
+        ro, ri, h, _, tp = dims
         z0 = float(pr.pose[2, 3]) - h / 2  # a float: numpy scalars are slower at the arithmetic
-        if z0 - 1e-9 <= z <= z0 + h + 1e-9:
+        top = z0 + h + (0.6 * (ro - ri) if pr.params[11] == 0.0 else 0.0)
+        if z0 - 1e-9 <= z <= top + 1e-9:
             r = max(r, ro + tp * (z - z0) / h)
     return r
 
@@ -43,13 +47,15 @@ def _anchors(r_rim: float, h: float) -> dict:
     return {"rim": (0.0, 0.0, h), "rim_edge": (r_rim, 0.0, h), "base": (0.0, 0.0, 0.0)}
 
 
-def _profile_walls(radii, heights, t, bottom):
-    """Bottom disc and tapered wall rings through the profile points (radius, z)."""
+def _profile_walls(radii, heights, t, bottom, lip="flat"):
+    """Bottom disc and tapered wall rings through the profile points (radius, z); the
+    top ring ends in a lip of style ``lip`` (:func:`artipg.templates.detail.lipped_wall`)."""
     prims = [frustum(radii[0], radii[0] + (radii[1] - radii[0]) * bottom / heights[1], bottom,
                      translation(0, 0, bottom / 2), role="bottom")]
-    for (r0, z0), (r1, z1) in zip(zip(radii, heights), zip(radii[1:], heights[1:])):
+    last = len(radii) - 2
+    for i, ((r0, z0), (r1, z1)) in enumerate(zip(zip(radii, heights), zip(radii[1:], heights[1:]))):
         h = z1 - z0
-        prims.append(ring(r0, r0 - t, h, pose=translation(0, 0, z0 + h / 2), role="wall", taper=r1 - r0))
+        prims += lipped_wall(r0, r0 - t, h, z0 + h / 2, lip if i == last else "flat", taper=r1 - r0)
     return prims
 
 
@@ -64,7 +70,7 @@ def bellied_shell(p, radius: float, height: float, wall: float | None = None, ba
     radii, heights = (r0, rb, radius), (0.0, zb, height - band)
     if band > 0:
         radii, heights = radii + (radius,), heights + (height,)
-    prims = _profile_walls(radii, heights, t, max(t, p.uniform("bottom", 0.003, 0.008)))
+    prims = _profile_walls(radii, heights, t, max(t, p.uniform("bottom", 0.003, 0.008)), lip_style(p))
     return Part("body", "bellied_shell", prims, anchors=_anchors(radius, height), regions={"lift": Region(("wall",))})
 
 
@@ -78,7 +84,7 @@ def _kettle(name, p, radii, heights, opening, skirt):
     hc = max(p.uniform("collar", 0.003, 0.012), skirt + 0.0015 if skirt > 0 else 0.0)
     ro = min(opening, R - 0.008)
     prims.append(ring(R, ro, t, pose=translation(0, 0, H - t / 2), role="top"))
-    prims.append(ring(ro, ro - tc, hc + 0.0005, pose=translation(0, 0, H + hc / 2 - 0.00025), role="rim"))
+    prims += lipped_wall(ro, ro - tc, hc + 0.0005, H + hc / 2 - 0.00025, lip_style(p), role="rim")
     return Part("body", name, prims, anchors=_anchors(ro, H + hc) | {"shoulder": (R, 0.0, H)},
                 regions={"lift": Region(("wall",)), "grasp": Region(("wall",))})
 
