@@ -53,6 +53,8 @@ SEMANTIC_LABELS: tuple[str, ...] = (
     "connector",   # USB plug, its sliding carriage
     "cover",       # swivel cover of a flash drive
     "blade",       # scissor, plier, knife blade or jaw
+    "jaw",         # a spring clip's leg (bag clip, plastic clothes peg)
+    "segment",     # a folding rule's segment
 )
 
 LABEL_ID: dict[str, int] = {name: i for i, name in enumerate(SEMANTIC_LABELS)}
