@@ -106,3 +106,38 @@ def test_tape_blade_slides_out_of_the_mouth():
         front = _points(obj, case)[:, 0].min()
         out = _points(obj, name, {blade.name: blade.limits[1]})
         assert out[:, 0].min() < front - 0.9 * blade.limits[1]
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_lighter_joints_per_subcategory(seed):
+    obj = artipg.generate("lighter", seed)
+    kinds = sorted(j.type for j in obj.movable_joints)
+    expected = {"flip_top": ["continuous", "revolute"], "disposable": ["continuous", "prismatic"],
+                "utility": ["prismatic", "prismatic"]}[obj.subcategory]
+    assert kinds == expected
+    for j in obj.movable_joints:
+        if j.type == "revolute":  # the flip-top lid flips over beside the case
+            assert 2.6 < j.limits[1] < math.pi
+        elif j.type == "prismatic":
+            assert 0.0015 < j.limits[1] < 0.008
+
+
+def test_flip_lid_clears_the_chimney_and_lands_beside_the_case():
+    for obj in _by_sub("lighter", "flip_top"):
+        lid = next(j for j in obj.movable_joints if j.type == "revolute")
+        name = _child_part(obj, lid, "lid")
+        case = _points(obj, next(p.name for p in obj.parts if p.semantic == "body"))
+        side = case[:, 1].min() + obj.params["lighter.width"].value  # the case's +y side (its knuckle aside)
+        opened = _points(obj, name, {lid.name: lid.limits[1]})
+        assert np.quantile(opened[:, 1], 0.02) > side  # on the hinge side, beside the case
+        rest = _points(obj, name)
+        assert abs(rest[:, 1].min() - case[:, 1].min()) < 1e-3  # closed: over the case
+
+
+def test_utility_lighter_trigger_stays_in_its_opening():
+    for obj in _by_sub("lighter", "utility"):
+        trig = next(j for j in obj.movable_joints if tuple(j.axis) == (1.0, 0.0, 0.0) and
+                    _child_part(obj, j).startswith("button"))
+        pts = _points(obj, _child_part(obj, trig), {trig.name: trig.limits[1]})
+        handle = _points(obj, next(p.name for p in obj.parts if p.semantic == "body"))
+        assert pts[:, 2].min() > handle[:, 2].min() and pts[:, 0].max() < handle[:, 0].max()

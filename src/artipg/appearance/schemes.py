@@ -84,6 +84,8 @@ SCHEMES: dict[str, dict] = {
                 "families": {"main": {"painted_metal": 0.4, "black_metal": 0.3, "neutral_plastic": 0.3},
                              "accent": {"chrome": 0.6, "brushed_metal": 0.4}}},
     "switch": {"families": {"main": {"neutral_plastic": 1.0}, "accent": {"neutral_plastic": 1.0}}},
+    "lighter": {"families": {"main": {"glossy_plastic": 0.5, "matte_plastic": 0.3, "neutral_plastic": 0.2}},
+                "sub": {"flip_top": {"main": {"chrome": 0.4, "brushed_metal": 0.35, "black_metal": 0.25}}}},
 }
 
 
