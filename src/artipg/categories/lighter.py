@@ -9,7 +9,7 @@ Parts and joints per sub-category:
   (continuous about y) and the gas lever behind it, prismatic down 2-3 mm.
 - utility: a handle with a trigger opening closed by a guard bar, the trigger
   prismatic back (+x) 4-7 mm, a child-lock slider on top prismatic back 3-4 mm, and
-  a long steel nozzle forward (-x); it lies on the handle's flat bottom.
+  a long metal nozzle forward (-x) from a collar; it lies on the handle's flat bottom.
 Sizes (metres): flip-top cases 0.034-0.04 wide, 0.012-0.015 deep, about as tall, lids
 0.45-0.55 of the width tall; disposable 0.06-0.082 tall, 0.02-0.026 wide, 0.011-0.015
 deep; utility handles 0.09-0.12 long with nozzles 0.1-0.18 (0.2-0.3 overall).
@@ -21,8 +21,8 @@ import math
 
 from artipg.geometry.transforms import rot_z, translation
 from artipg.rules import Category, Slot
-from artipg.templates.lighters import (TANKS, WHEELS, flip_case, flip_lid, gas_lever, hood, lock_slider, nozzle,
-                                       trigger, utility_handle)
+from artipg.templates.lighters import (TANKS, WHEELS, collar, flip_case, flip_lid, gas_lever, hood, lock_slider,
+                                       nozzle, trigger, utility_handle)
 
 CLEAR = 0.001  # moving parts off the fixed ones
 
@@ -46,7 +46,7 @@ def flip_top(ctx):
     y1 = yw - rw - CLEAR
     root = ctx.builder.create_link("case")
     root.add(flip_case(p, W, D, H, (y0, y1, top, p.uniform("chimney_wall", 0.0005, 0.0008)), rh, hy,
-                       (ww / 2 + 0.0004, yw, zw + 0.3 * rw, 0.8 * rw)))
+                       (ww / 2 + 0.0006, yw, zw + 0.3 * rw, 0.8 * rw)))
     wheel = ctx.builder.create_link("wheel", root)
     wheel.set_joint("continuous", translation(0.0, yw, zw) @ rot_z(math.pi / 2), axis=(0.0, 1.0, 0.0))  # axle along x
     wheel.add(ctx.choose("wheel", WHEELS)(p, rw, ww))
@@ -87,8 +87,9 @@ def utility(ctx):
     root = ctx.builder.create_link("handle")
     root.add(utility_handle(p, L, W, H, (x0, x0 + lo, z0, z1)))
     zn = 0.5 * (z1 + H)
-    root.add(nozzle(p, p.uniform("nozzle_length", 0.1, 0.18), p.uniform("nozzle_radius", 0.0035, 0.005), 0.0006),
-             translation(0.0, 0.0, zn))
+    rn = p.uniform("nozzle_radius", 0.0035, 0.005)
+    root.add(nozzle(p, p.uniform("nozzle_length", 0.1, 0.18), rn, 0.0006), translation(0.0, 0.0, zn))
+    root.add(collar(p, rn), translation(0.0, 0.0, zn))
     travel = p.uniform("trigger_travel", 0.004, 0.007)
     trig = ctx.builder.create_link("trigger", root)
     trig.set_joint("prismatic", translation(x0 + 0.0005, 0.0, z0 + 0.0005), axis=(1.0, 0.0, 0.0), limits=(0.0, travel))
@@ -109,6 +110,6 @@ RULE = Category(
     name="lighter",
     subcategories={"disposable": 2.0, "flip_top": 1.5, "utility": 1.0},
     mass_range=(0.008, 0.15),  # kg: a mini disposable to a utility lighter
-    materials={"body": "shell", "lid": "steel", "wheel": "steel", "nozzle": "steel", "lever": "plastic"},
+    materials={"body": "shell", "lid": "steel", "wheel": "steel", "nozzle": "aluminium", "lever": "plastic"},
     slots=(Slot("lighter", lighter),),
 )

@@ -70,7 +70,7 @@ def flip_case(p, width: float, depth: float, height: float, chimney: tuple, hing
                        translation(0.0, 0.5 * (y0 + y1), 0.5 * (height + top)), role="chimney")]
     prims.append(cylinder(hinge_r, 0.4 * depth, _ALONG_X.at(0.0, hinge_y, height), role="knuckle"))
     gx, ye, ze, hy = ears
-    te = 0.0008
+    te = 0.0015  # thick enough for the simulators' collision margins
     prims += [cuboid_between((gx, ye - hy, height), (gx + te, ye + hy, ze), role="ear"),
               cuboid_between((-gx - te, ye - hy, height), (-gx, ye + hy, ze), role="ear")]
     return Part("body", "flip_case", prims, anchors={"hinge": (0.0, hinge_y, height)},
@@ -98,18 +98,24 @@ def flip_lid(p, width: float, depth: float, height: float, wall: float, gap: flo
 
 # ---------------------------------------------------------------- disposable
 def oval_body(p, width: float, depth: float, height: float) -> Part:
-    """An oval tank (a 16-gon stretched to ``depth`` x ``width``), standing."""
+    """An oval tank (a 16-gon stretched to ``depth`` x ``width``) standing on a flat
+    foot plate (the bottom's flat; a box also gives the simulators a stable footprint)."""
     a = np.linspace(0.0, 2 * math.pi, 17)[:-1]
     loop = profile.polygon(np.column_stack([0.5 * depth * np.cos(a), 0.5 * width * np.sin(a)]))
-    prims = [extrusion([loop], height, pose=translation(0.0, 0.0, height / 2), role="tank")]
+    foot = 0.0006
+    prims = [extrusion([loop], height - foot, pose=translation(0.0, 0.0, (height + foot) / 2), role="tank"),
+             cuboid_between((-0.35 * depth, -0.35 * width, 0.0), (0.35 * depth, 0.35 * width, foot + 0.0002),
+                            role="tank")]
     return Part("body", "oval_body", prims, regions={"grasp": Region(("tank",))},
                 grasps=Deferred.one(top_grasp, 0.0, 0.0, 0.5 * height, width + 0.02, "y", (0.0, 0.0, 0.0)))
 
 
 def rounded_body(p, width: float, depth: float, height: float) -> Part:
-    """A rounded rectangular tank, standing."""
-    r = p.uniform("edge", 0.2, 0.4) * depth
-    prims = [rounded_box(depth, width, height, r, translation(0.0, 0.0, height / 2), role="tank")]
+    """A rounded rectangular tank, standing on a flat foot plate."""
+    r = p.uniform("edge", 0.12, 0.25) * depth
+    foot = 0.0006
+    prims = [rounded_box(depth, width, height - foot, r, translation(0.0, 0.0, (height + foot) / 2), role="tank"),
+             cuboid_between((-0.3 * depth, -0.3 * width, 0.0), (0.3 * depth, 0.3 * width, foot + 0.0002), role="tank")]
     return Part("body", "rounded_body", prims, regions={"grasp": Region(("tank",))},
                 grasps=Deferred.one(top_grasp, 0.0, 0.0, 0.5 * height, width + 0.02, "y", (0.0, 0.0, 0.0)))
 
@@ -150,15 +156,19 @@ def utility_handle(p, length: float, width: float, height: float, trigger: tuple
 
 
 def nozzle(p, length: float, radius: float, wall: float) -> Part:
-    """The long nozzle: a tube along -x from the origin with a collar where it leaves
-    the handle and a flared tip."""
+    """The long nozzle: a tube along -x from the origin with a flared tip."""
     tip = p.uniform("tip", 0.008, 0.015)
-    collar = p.uniform("collar", 0.01, 0.018)
     prims = [ring(radius, radius - wall, length, pose=_ALONG_X.at(-length / 2, 0.0, 0.0), role="tube"),
-             frustum(radius, p.uniform("collar_radius", 1.4, 1.8) * radius, collar, _ALONG_X.at(-collar / 2, 0.0, 0.0),
-                     role="collar"),
              frustum(1.15 * radius, radius, tip, _ALONG_X.at(-length - tip / 2, 0.0, 0.0), role="tip")]
     return Part("nozzle", "nozzle", prims)
+
+
+def collar(p, radius: float) -> Part:
+    """The handle's plastic collar round the nozzle's root (along -x from the origin)."""
+    c = p.uniform("collar", 0.01, 0.018)
+    prims = [frustum(radius, p.uniform("collar_radius", 1.4, 1.8) * radius, c, _ALONG_X.at(-c / 2, 0.0, 0.0),
+                     role="collar")]
+    return Part("body", "nozzle_collar", prims)
 
 
 def trigger(p, length: float, width: float, height: float) -> Part:
