@@ -24,7 +24,8 @@ import math
 
 from artipg.geometry.transforms import rot_z, translation
 from artipg.rules import Category, Slot
-from artipg.templates.rules_tapes import RIVET_HEAD, SEGMENT_ENDS, belt_clip, lock_slider, segment, tape_blade, tape_case
+from artipg.templates.rules_tapes import (RIVET_HEAD, SEGMENT_ENDS, belt_clip, lock_slider, segment, tape_blade,
+                                          tape_case)
 
 # folding sub-categories: label, segment count, length, width, thickness, rivet radius (of the width)
 FOLDING = {

@@ -6,16 +6,17 @@ side plates rising and meeting at the mouth at z = ``height``, the clip ``width`
 long along y; a rolled edge (curl) along y at each side of the mouth, centred at
 x = +-``curl_x(...)``, z = ``height`` (anchors ``pivot_+x`` / ``pivot_-x``).
 Lever frame: origin on the pivot axis (+y), the wire loop standing up along +z in the
-y-z plane, its legs at y = +-``leg_y`` outside the body, their bent ends running
-inward along the axis into the curl; anchor ``grip`` = the loop's top bar.
+y-z plane, its legs starting outside the body (``half`` + bend radius off the
+middle), their bent ends running inward along the axis into the curl; anchor
+``grip`` = the loop's top bar. Regions ``grasp`` / ``push`` on the wire.
 
 Leg frame (spring clips, lying on a side face): the pivot (the spring coil's axis,
 +z) at the origin on the contact plane y = 0; the jaw reaches to x = -``jaw`` (the
 front), the handle to x = +``handle``; the legs are ``width`` tall along z (centred);
 the lower leg fills -T <= y <= 0 (``side`` = -1), the upper leg 0 <= y <= T
-(``side`` = +1), both moved ``FACE_GAP`` off y = 0; the handle's inner face leaves the contact plane at a
-slope ``taper`` behind the pivot, and a square slot of half-width ``notch`` round the
-pivot holds the coil. Regions: ``grasp`` / ``press`` on the handle (role ``grip``). Metres.
+(``side`` = +1), both moved ``FACE_GAP`` off y = 0; the handle's inner face leaves
+the contact plane at a slope ``taper`` behind the pivot, and a square slot of
+half-width ``notch`` round the pivot holds the coil. Regions: ``grasp`` / ``press`` on the handle (role ``grip``). Metres.
 """
 
 from __future__ import annotations
