@@ -11,8 +11,10 @@ Parts and joints per sub-category:
   prismatic back (+x) 4-7 mm, a child-lock slider on top prismatic back 3-4 mm, and
   a long metal nozzle forward (-x) from a collar; it lies on the handle's flat bottom.
 Sizes (metres): flip-top cases 0.034-0.04 wide, 0.012-0.015 deep, about as tall, lids
-0.45-0.55 of the width tall; disposable 0.06-0.082 tall, 0.02-0.026 wide, 0.011-0.015
-deep; utility handles 0.09-0.12 long with nozzles 0.1-0.18 (0.2-0.3 overall).
+0.45-0.55 of the width tall (Zippo: 38 x 13 x 57 mm); disposable tanks 0.052-0.072
+tall (0.06-0.082 with hood and wheel: BIC J3-J6, Clipper), 0.02-0.026 wide,
+0.011-0.015 deep; utility handles 0.09-0.12 long with nozzles 0.1-0.18 (0.2-0.3
+overall).
 """
 
 from __future__ import annotations
@@ -58,7 +60,7 @@ def flip_top(ctx):
 
 def disposable(ctx):
     p = ctx.p
-    W, D, H = p.uniform("width", 0.02, 0.026), p.uniform("depth", 0.011, 0.015), p.uniform("height", 0.06, 0.082)
+    W, D, H = p.uniform("width", 0.02, 0.026), p.uniform("depth", 0.011, 0.015), p.uniform("height", 0.052, 0.072)
     root = ctx.builder.create_link("body")
     root.add(ctx.choose("tank", TANKS)(p, W, D, H))
     rw = p.uniform("wheel_radius", 0.28, 0.33) * D
@@ -85,8 +87,9 @@ def utility(ctx):
     x0, lo = p.uniform("guard_front", 0.01, 0.015), p.uniform("opening", 0.018, 0.026)
     z0, z1 = p.uniform("guard_bar", 0.004, 0.006), p.uniform("opening_top", 0.45, 0.55) * H
     root = ctx.builder.create_link("handle")
-    root.add(utility_handle(p, L, W, H, (x0, x0 + lo, z0, z1)))
-    zn = 0.5 * (z1 + H)
+    hf = p.uniform("front_height", 0.7, 0.85) * H  # the handle rises from its nose to the grip
+    root.add(utility_handle(p, L, W, H, hf, (x0, x0 + lo, z0, z1)))
+    zn = 0.5 * (z1 + hf)
     rn = p.uniform("nozzle_radius", 0.0035, 0.005)
     root.add(nozzle(p, p.uniform("nozzle_length", 0.1, 0.18), rn, 0.0006), translation(0.0, 0.0, zn))
     root.add(collar(p, rn), translation(0.0, 0.0, zn))
@@ -97,7 +100,7 @@ def utility(ctx):
     ls = p.uniform("lock_length", 0.008, 0.012)
     lt = p.uniform("lock_travel", 0.003, 0.004)
     lock = ctx.builder.create_link("lock", root)
-    lock.set_joint("prismatic", translation(p.uniform("lock_at", 0.3, 0.45) * L, 0.0, H + 0.0002), axis=(1.0, 0.0, 0.0),
+    lock.set_joint("prismatic", translation(p.uniform("lock_at", 0.5, 0.65) * L, 0.0, H + 0.0002), axis=(1.0, 0.0, 0.0),
                    limits=(0.0, lt))
     lock.add(lock_slider(p, ls, p.uniform("lock_width", 0.3, 0.45) * W, p.uniform("lock_height", 0.002, 0.0035)))
 

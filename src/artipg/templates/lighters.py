@@ -10,8 +10,8 @@ Frames (metres):
 - wheel: origin on its axle (local +y), centred, ``width`` long along it.
 - disposable body: standing on z = 0, its top face at z = ``height``, centred.
 - utility handle: lying along x from x = 0 (front) to ``length`` (back), its
-  bottom on z = 0, with a trigger opening at the front bottom (anchors
-  ``trigger_box`` lo / hi corners, ``nozzle`` = where the nozzle leaves the front).
+  bottom on z = 0, with a trigger opening at the front bottom; nozzle and collar
+  along -x from their root on the handle's front face.
 """
 
 from __future__ import annotations
@@ -30,6 +30,7 @@ from artipg.templates.levers import top_grasp
 
 _ALONG_Y = Placer(rot_x(-math.pi / 2))  # local z -> +y
 _ALONG_X = Placer(rot_y(math.pi / 2))   # local z -> +x
+_XZ = rot_x(math.pi / 2)                # outline (x, y) -> object (x, z), extruded along y
 
 
 # ---------------------------------------------------------------- flint wheels
@@ -142,12 +143,15 @@ def gas_lever(p, length: float, width: float, thickness: float) -> Part:
 
 
 # ---------------------------------------------------------------- utility
-def utility_handle(p, length: float, width: float, height: float, trigger: tuple) -> Part:
-    """Handle block with a trigger opening at the front bottom, closed below by a
-    guard bar; ``trigger`` = (x0, x1, z0, z1) the opening."""
+def utility_handle(p, length: float, width: float, height: float, front: float, trigger: tuple) -> Part:
+    """Handle with a trigger opening at the front bottom, closed below by a guard
+    bar; ``trigger`` = (x0, x1, z0, z1) the opening. Its top rises from ``front``
+    high at the nose to ``height`` at 0.35 of its length and rounds off at the back."""
     x0, x1, z0, z1 = trigger
     w2 = width / 2
-    prims = [cuboid_between((0.0, -w2, z1), (length, w2, height), role="grip"),
+    side = profile.polygon([(0.0, z1), (length, z1), (length, 0.9 * height), (0.93 * length, height),
+                            (0.35 * length, height), (0.0, front)])
+    prims = [extrusion([side], width, pose=_XZ, role="grip"),
              cuboid_between((x1, -w2, 0.0), (length, w2, z1), role="grip"),
              cuboid_between((0.0, -w2, 0.0), (x0, w2, z1), role="guard"),
              cuboid_between((x0, -w2, 0.0), (x1, w2, z0), role="guard")]
