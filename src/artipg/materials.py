@@ -68,6 +68,7 @@ MATERIAL = {
     "wheel": "rubber", "pedal": "rubber",
     "stand": "plastic", "sphere": "plastic", "clip": "steel", "refill": "plastic", "connector": "steel",
     "cover": "steel", "blade": "steel",
+    "jaw": "plastic", "segment": "wood",
 }
 DEFAULT_CLASS = "plastic"
 
