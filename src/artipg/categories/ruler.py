@@ -4,8 +4,9 @@ Parts and joints per sub-category:
 - folding rule: 4-10 flat segments (wood; round, chamfered or square ends) riveted
   end to end in a zig-zag; each segment revolute about the rivet (z) it shares with
   the previous one, 0 = folded back onto it (the rule folds into a stack, each
-  segment one layer up), pi = straight out. Open, the rule is a shallow staircase of
-  those layers (a rigid model of the segments' tilt).
+  segment one layer up), pi = straight out; the joints turn in alternate senses, so
+  opened alike they make the rule's zig-zag. Open, the rule is a shallow staircase
+  of those layers (a rigid model of the segments' tilt).
 - tape measure: a plastic case (two cheeks, the core above the blade slot, the floor
   under it) with a belt clip on one side; the steel blade with its end hook is
   prismatic out of the mouth (-x, 0 = hook against the case), a lock slider on the
@@ -46,10 +47,11 @@ def folding(ctx):
     pitch = L - w
     link = ctx.builder.create_link("segment")
     link.add(segment(p, ends, semantic, pitch, w, t, 0.0, 0.5 * pitch))
-    for _ in range(1, n):
+    for k in range(1, n):
         child = ctx.builder.create_link("segment", link)
-        child.set_joint("revolute", translation(pitch, 0.0, t + LAYER_GAP) @ rot_z(math.pi), axis=(0.0, 0.0, 1.0),
-                        limits=(0.0, math.pi))
+        # alternate senses: joints opened alike make the zig-zag of a real rule
+        child.set_joint("revolute", translation(pitch, 0.0, t + LAYER_GAP) @ rot_z(math.pi),
+                        axis=(0.0, 0.0, 1.0 if k % 2 else -1.0), limits=(0.0, math.pi))
         child.add(segment(p, ends, semantic, pitch, w, t, rivet, 0.5 * pitch))
         link = child
 
