@@ -1,5 +1,8 @@
 """Clips: binder clips, bag clips and clothes pegs.
 
+Clips without a moving part (paper clips, one-piece plastic clips that flex) are
+left out: every sub-category here has a hinge or pivot.
+
 Parts and joints per sub-category:
 - binder clip: a body folded from one steel sheet (spine, two side plates pressed
   together at the mouth, a rolled edge along each side of the mouth) and two wire

@@ -1,5 +1,8 @@
 """Rulers: folding rules, tape measures and hinged rules.
 
+Plain straight rulers have no moving part: the category leaves them out and covers
+the articulated kinds only.
+
 Parts and joints per sub-category:
 - folding rule: 4-10 flat segments (wood; round, chamfered or square ends) riveted
   end to end in a zig-zag; each segment revolute about the rivet (z) it shares with
