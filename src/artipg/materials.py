@@ -69,6 +69,7 @@ MATERIAL = {
     "stand": "plastic", "sphere": "plastic", "clip": "steel", "refill": "plastic", "connector": "steel",
     "cover": "steel", "blade": "steel",
     "head": "plastic",
+    "jaw": "plastic", "segment": "wood",
 }
 DEFAULT_CLASS = "plastic"
 

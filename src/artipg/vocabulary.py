@@ -54,6 +54,8 @@ SEMANTIC_LABELS: tuple[str, ...] = (
     "cover",       # swivel cover of a flash drive
     "blade",       # scissor, plier, knife blade or jaw
     "head",        # shaver head, razor cartridge, rotary head holder
+    "jaw",         # a spring clip's leg (bag clip, plastic clothes peg)
+    "segment",     # a folding rule's segment
 )
 
 LABEL_ID: dict[str, int] = {name: i for i, name in enumerate(SEMANTIC_LABELS)}

@@ -95,6 +95,8 @@ SCHEMES: dict[str, dict] = {
     "shaver": {"groups": {"head": "accent"},
                "families": {"main": {"neutral_plastic": 0.5, "matte_plastic": 0.3, "glossy_plastic": 0.2},
                             "accent": {"neutral_plastic": 0.6, "chrome": 0.4}}},
+    "lighter": {"families": {"main": {"glossy_plastic": 0.5, "matte_plastic": 0.3, "neutral_plastic": 0.2}},
+                "sub": {"flip_top": {"main": {"chrome": 0.4, "brushed_metal": 0.35, "black_metal": 0.25}}}},
 }
 
 

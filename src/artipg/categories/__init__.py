@@ -13,6 +13,7 @@ from artipg.categories import display, globe, mug, pen, glue_stick, usb
 from artipg.categories import scissors, pliers, knife
 from artipg.categories import toaster, remote, keyboard, suitcase
 from artipg.categories import dispenser, shampoo, shaver
+from artipg.categories import clip, ruler, lighter
 
 _MODULES = (storage_furniture, eyeglasses, stapler, bottle, switch, bucket, microwave, faucet, kitchen_pot, kettle,
             safe, box, laptop, door, window, trash_can,
@@ -20,6 +21,8 @@ _MODULES = (storage_furniture, eyeglasses, stapler, bottle, switch, bucket, micr
             display, globe, mug, pen, glue_stick, usb,
             scissors, pliers, knife,
             toaster, remote, keyboard, suitcase,
-            dispenser, shampoo, shaver)
+            dispenser, shampoo, shaver,
+            clip, ruler, lighter,
+            )
 
 REGISTRY = {m.RULE.name: m.RULE for m in _MODULES}
