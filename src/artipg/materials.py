@@ -68,6 +68,8 @@ MATERIAL = {
     "wheel": "rubber", "pedal": "rubber",
     "stand": "plastic", "sphere": "plastic", "clip": "steel", "refill": "plastic", "connector": "steel",
     "cover": "steel", "blade": "steel",
+    "hand": "aluminium", "pendulum": "brass", "bell": "steel", "rotor": "plastic", "guard": "steel",
+    "shade": "steel", "bulb": "glass",
 }
 DEFAULT_CLASS = "plastic"
 

@@ -53,6 +53,13 @@ SEMANTIC_LABELS: tuple[str, ...] = (
     "connector",   # USB plug, its sliding carriage
     "cover",       # swivel cover of a flash drive
     "blade",       # scissor, plier, knife blade or jaw
+    "hand",        # clock hand
+    "pendulum",    # clock pendulum
+    "bell",        # alarm-clock bell
+    "rotor",       # fan rotor hub (its blades are "blade")
+    "guard",       # fan guard / grille
+    "shade",       # lamp shade or reflector head
+    "bulb",        # lamp bulb
 )
 
 LABEL_ID: dict[str, int] = {name: i for i, name in enumerate(SEMANTIC_LABELS)}

@@ -29,6 +29,7 @@ GROUP = {
     "lever": "accent", "hinge": "accent", "cap": "accent", "pump": "accent", "nozzle": "accent",
     "spout": "accent", "glass": "glass", "lens": "glass", "turntable": "glass", "screen": "display",
     "panel": "panel", "keyboard": "panel", "touchpad": "panel", "wheel": "rubber", "pedal": "rubber",
+    "hand": "accent", "pendulum": "accent", "bulb": "glass",
 }
 
 _FURNITURE = {"main": {"wood": 0.45, "lacquered_wood": 0.25, "painted_wood": 0.3},

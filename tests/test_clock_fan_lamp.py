@@ -1,0 +1,63 @@
+"""Category-specific facts of clocks, fans and lamps: the joints each real object has,
+clearances the generator promises, and duplicated parts' counts."""
+
+import math
+
+import numpy as np
+
+import artipg
+
+SEEDS = range(10)
+
+
+def _joints(obj, name):
+    return [j for j in obj.movable_joints if j.child.startswith(name)]
+
+
+def _by_sub(category, sub, n=3, start=0, limit=300):
+    out = []
+    for seed in range(start, start + limit):
+        obj = artipg.generate(category, seed)
+        if obj.subcategory == sub:
+            out.append(obj)
+            if len(out) == n:
+                break
+    assert out, f"no {sub} among {limit} seeds"
+    return out
+
+
+def test_clock_hands_turn_about_the_dial_axis_in_separate_planes():
+    for seed in SEEDS:
+        obj = artipg.generate("clock", seed)
+        hands = _joints(obj, "hour_hand") + _joints(obj, "minute_hand") + _joints(obj, "second_hand")
+        assert 2 <= len(hands) <= 3 and all(j.type == "continuous" for j in hands)
+        # every hand turns about the same axis (object x), through the same point
+        origins = np.array([j.origin[:3, 3] for j in hands])
+        axes = np.array([j.origin[:3, :3] @ j.axis for j in hands])
+        assert np.allclose(np.abs(axes[:, 0]), 1.0)
+        assert np.allclose(origins[:, 1:], origins[0, 1:], atol=1e-9)
+        # stacked along -x with gaps: each hand's slab lies clear of the next one's
+        slabs = []
+        for j in hands:
+            link = next(lk for lk in obj.links if lk.name == j.child)
+            b = np.array([p.bounds() for p in link.parts])
+            slabs.append((j.origin[0, 3] + b[:, 0, 0].min(), j.origin[0, 3] + b[:, 1, 0].max()))
+        slabs.sort()
+        for (lo0, hi0), (lo1, hi1) in zip(slabs, slabs[1:]):
+            assert lo1 - hi0 >= 0.001
+
+
+def test_clock_subcategories_have_their_joints():
+    for obj in _by_sub("clock", "mantel_clock"):
+        door = _joints(obj, "door")
+        assert len(door) == 1 and door[0].type == "revolute" and math.radians(80) < door[0].limits[1] < 2.0
+        for j in _joints(obj, "pendulum"):
+            assert j.type == "revolute" and -0.2 < j.limits[0] < 0 < j.limits[1] < 0.2
+    for obj in _by_sub("clock", "alarm_clock"):
+        buttons, knobs = _joints(obj, "button"), _joints(obj, "knob")
+        assert 1 <= len(buttons) <= 2 and all(j.type == "prismatic" and j.limits[1] <= 0.006 for j in buttons)
+        assert 1 <= len(knobs) <= 3 and all(j.type == "continuous" for j in knobs)
+    for obj in _by_sub("clock", "wall_clock"):
+        assert {j.child.split("_")[0] for j in obj.movable_joints} <= {"hour", "minute", "second"}
+        ext = np.ptp(np.asarray(obj.bounds()), axis=0)
+        assert 0.2 <= ext[1] <= 0.45 and 0.04 <= ext[0] <= 0.12  # 0.22-0.42 across, a shallow case (or cradle)
