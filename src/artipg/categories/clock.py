@@ -12,8 +12,9 @@ Joints: every hand continuous about the dial axis (x, the front is -x); the beze
 revolute about a vertical hinge (0 to 85-105 deg); the pendulum revolute about x
 (+-3-10 deg); alarm buttons prismatic down (3-6 mm); setting knobs continuous.
 Sizes (metres, real ranges): wall clocks 0.22-0.42 across (dial 0.2-0.38), 0.04-0.07
-deep; mantel clocks 0.18-0.45 wide, 0.2-0.4 tall, 0.1-0.16 deep, dials 0.1-0.18; alarm
-clocks 0.09-0.16 wide, 0.1-0.2 tall with bells, 0.05-0.08 deep.
+deep; mantel clocks 0.18-0.45 wide, 0.2-0.45 tall, 0.12-0.18 deep (door and plinth
+included), dials 0.1-0.18; alarm clocks 0.1-0.18 wide, 0.12-0.16 tall with bells,
+0.07-0.1 deep with the knobs at the back.
 Wall clocks hang on a nail in use. The category is not a fixture (its mantel and alarm
 clocks stand on a shelf and are dropped on a floor in validation), so wall clocks are
 generated standing as on a shelf: flat-bottomed cases on their bottom edge, round
@@ -27,10 +28,10 @@ import math
 from artipg.geometry import cuboid, cylinder, profile
 from artipg.geometry.rounded_box import rounded_box
 from artipg.geometry.transforms import rot_x, rot_y, rot_z, translation
+from artipg.model.part import Part, Region
 from artipg.rules import Category, Slot
 from artipg.templates.clocks import (HANDS, WALL_CASES, bell, bezel_door, clock_dial, cradle, mount_hands, pendulum,
                                      round_case, x_disc, x_frame, x_ring, yz_extrusion)
-from artipg.templates.clocks import Part, Region
 from artipg.templates.controls import (BUTTONS, button_bezel, fluted_knob, mount_button, mount_knob, round_button,
                                        round_knob)
 
@@ -180,7 +181,8 @@ def _alarm(ctx, root):
         H = 2 * Rc + p.uniform("top_margin", 0.008, 0.025)
         zc = -Rc - p.uniform("bottom_margin", 0.004, 0.012)  # the box bottom below the dial centre
         r = p.uniform("corner", 0.004, 0.012)
-        root.add(Part("body", "alarm_box", [rounded_box(D, W, H, r, translation(td + D / 2, 0, zc + H / 2), role="case")],
+        box = rounded_box(D, W, H, r, translation(td + D / 2, 0, zc + H / 2), role="case")
+        root.add(Part("body", "alarm_box", [box],
                       regions={"lift": Region(("case",)), "grasp": Region(("case",))}))
         top = zc + H
         back, half_w = td + D, W / 2
@@ -231,8 +233,8 @@ def _bells_and_feet(p, root, Rc, xm, D):
         u = (s * math.sin(phi), math.cos(phi))
         pose = translation(xm, dist * u[0], dist * u[1]) @ rot_x(-s * phi)
         root.add(bell(p.scope("bell_l" if s < 0 else "bell_r"), rb), pose)
-        root.add(Part("body", "bell_post", [cylinder(0.002, dist - Rc + 0.006, pose @ translation(0, 0, -(dist - Rc + 0.006) / 2 + 0.001),
-                                                     role="post")]))
+        lp = dist - Rc + 0.006  # from 6 mm inside the case to 1 mm into the bell
+        root.add(Part("body", "bell_post", [cylinder(0.002, lp, pose @ translation(0, 0, -lp / 2 + 0.001), role="post")]))
     hf = p.uniform("foot_height", 0.008, 0.02)
     yf = p.uniform("foot_spread", 0.5, 0.7) * Rc
     zt = -math.sqrt(Rc * Rc - yf * yf) + 0.003

@@ -12,8 +12,8 @@ pedestal heads oscillate, revolute about z (+-35-60 deg) on a collar, and tilt,
 revolute about y (-11 to +17-25 deg); the pedestal pole slides up, prismatic
 (0.15-0.35 m); speed keys prismatic (3-5 mm); knobs revolute (0-270 deg) or
 continuous.
-Sizes (metres, real ranges): desk fans 0.25-0.5 tall, guards 0.22-0.36 across (9-14
-in); pedestal fans 1.0-1.45 tall at rest, guards 0.36-0.48 (14-18 in), bases 0.3-0.5;
+Sizes (metres, real ranges): desk fans 0.4-0.65 tall (12-16 in models), guards 0.22-0.36
+across (9-14 in); pedestal fans 1.0-1.45 tall at rest, guards 0.36-0.48 (14-18 in), bases 0.3-0.5;
 box fans 0.4-0.58 square, 0.09-0.14 deep (16-20 in).
 """
 
@@ -28,7 +28,7 @@ from artipg.rules import Category, Slot
 from artipg.templates.clocks import x_disc, yz_extrusion
 from artipg.templates.controls import (fluted_knob, mount_button_row, mount_knob, pointer_knob, rect_button,
                                        round_knob)
-from artipg.templates.fans import BASES, GUARDS, ROTORS, cross_base, motor_housing, paddle_rotor
+from artipg.templates.fans import BASES, GUARDS, ROTORS, cross_base, motor_housing
 
 KNOBS = {round_knob: 1.0, pointer_knob: 1.5, fluted_knob: 1.0}
 BLADES = {3: 2.0, 4: 1.0, 5: 2.0, 6: 0.5}
@@ -172,8 +172,8 @@ def _box(ctx, root):
     root.add(Part("body", "box_fan_frame", [yz_extrusion([outer, hole], -D / 2, D / 2, "frame", z=zc)],
                   regions={"lift": Region(("frame",))}))
     for s in (-1.0, 1.0):  # feet widening the stance front to back
-        root.add(Part("base", "box_fan_foot", [cuboid(1.5 * D, 0.06, zc - S / 2 + 0.002,
-                                                      translation(0, s * 0.3 * S, (zc - S / 2 + 0.002) / 2), role="foot")]))
+        hf = zc - S / 2 + 0.002
+        root.add(Part("base", "box_fan_foot", [cuboid(1.5 * D, 0.06, hf, translation(0, s * 0.3 * S, hf / 2), role="foot")]))
     # grilles: vertical bars across the opening, front and back
     nb = p.integers("bars", 9, 15)
     grille = []

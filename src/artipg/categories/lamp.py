@@ -84,7 +84,8 @@ def _desk(ctx, root):
     yc = rod / 2 + 0.001 + ch / 2
     head = b.create_link("head", upper)
     head.set_joint("revolute", translation(0, 0, L2) @ rot_y(math.pi / 2 - delta), axis=(0.0, 1.0, 0.0),
-                   limits=(-math.radians(p.uniform("head_back", 20.0, 30.0)), math.radians(p.uniform("head_fwd", 30.0, 45.0))))
+                   limits=(-math.radians(p.uniform("head_back", 20.0, 30.0)),
+                           math.radians(p.uniform("head_fwd", 30.0, 45.0))))
     R = p.uniform("head_radius", 0.05, 0.09)
     shade = ctx.choose("head", HEADS)(p.scope("shade"), R)
     neck = p.uniform("neck", 0.015, 0.035)
@@ -216,15 +217,17 @@ def _floor(ctx, root):
         tw = 0.004
         neck = b.create_link("neck", root)
         neck.set_joint("revolute", translation(0, 0, top) @ rot_y(-(math.pi / 2 - up)), axis=(0.0, 1.0, 0.0),
-                       limits=(-math.radians(p.uniform("neck_down", 20.0, 30.0)), math.radians(p.uniform("neck_up", 15.0, 25.0))))
+                       limits=(-math.radians(p.uniform("neck_down", 20.0, 30.0)),
+                               math.radians(p.uniform("neck_up", 15.0, 25.0))))
         neck.add(arm_link(p.scope("neck"), L, rk, tw, fork=lk + 0.002))
         R = p.uniform("head_radius", 0.06, 0.1)
         shade = ctx.choose("head", HEADS)(p.scope("shade"), R)
         # the head hangs below the neck's end, world-aligned at rest
         hang = translation(0, 0, L) @ rot_y(math.pi / 2 - up)
         drop = rk + 0.01
-        neck.add(Part("stand", "head_stem", [cuboid(0.008, lk + 0.002 + 2 * tw, 0.006, hang @ translation(0, 0, -rk - 0.003), role="stem"),
-                                             cylinder(0.005, drop, hang @ translation(0, 0, -rk - 0.003 - drop / 2), role="stem")]))
+        stem = [cuboid(0.008, lk + 0.002 + 2 * tw, 0.006, hang @ translation(0, 0, -rk - 0.003), role="stem"),
+                cylinder(0.005, drop, hang @ translation(0, 0, -rk - 0.003 - drop / 2), role="stem")]
+        neck.add(Part("stand", "head_stem", stem))
         neck.add(shade, hang @ translation(0, 0, -rk - 0.003 - drop))
         neck.add(bulb(p.scope("bulb"), min(0.6 * shade.anchors["top_radius"][0], 0.025), down=True),
                  hang @ translation(0, 0, -rk - 0.005 - drop))

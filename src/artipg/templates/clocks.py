@@ -29,7 +29,7 @@ import math
 
 import numpy as np
 
-from artipg.geometry import cuboid, cylinder, profile, rect_ring, ring, sphere, torus
+from artipg.geometry import cuboid, cylinder, profile, rect_ring, ring, sphere
 from artipg.geometry.extrusion import extrusion
 from artipg.geometry.transforms import rot_x, rot_y, translation
 from artipg.model.part import Deferred, Grasp, Part, Region
@@ -275,10 +275,3 @@ def bell(p, radius: float) -> Part:
     prims = [sphere(Rs, Rs - h, Rs, translation(0, 0, h - Rs), role="bell"),
              cylinder(0.15 * radius, 0.2 * radius, translation(0, 0, h + 0.1 * radius - 0.001), role="nut")]
     return Part("bell", "bell", prims, anchors={"top": (0.0, 0.0, h + 0.2 * radius)})
-
-
-def carry_loop(radius: float, wire: float) -> Part:
-    """Half-torus carrying handle (origin at the loop's centre; the loop in the y-z
-    plane, rising along +z from y = +radius over the top to y = -radius)."""
-    prim = torus(radius, wire, math.pi, _YZ, role="loop")
-    return Part("handle", "carry_loop", [prim], regions={"grasp": Region(("loop",)), "lift": Region(("loop",))})

@@ -51,8 +51,9 @@ def _rotor(template, p, radius: float, n: int, hub: float, outline_fn):
     blades = [extrusion(loops, t, pose=rot_x(2 * math.pi * k / n) @ rot_z(pitch) @ blade, role="blade")
               for k in range(n)]
     front = hd / 2 + 0.7 * hub
-    hub_part = Part("rotor", template, hub_prims, anchors={"half_depth": (half, 0.0, 0.0), "front": (-max(e, front), 0, 0),
-                                                          "back": (max(e, hd / 2), 0.0, 0.0), "hub_back": (hd / 2, 0, 0)},
+    anchors = {"half_depth": (half, 0.0, 0.0), "front": (-max(e, front), 0.0, 0.0), "back": (max(e, hd / 2), 0.0, 0.0),
+               "hub_back": (hd / 2, 0.0, 0.0)}
+    hub_part = Part("rotor", template, hub_prims, anchors=anchors,
                     regions={"rotate": _SPIN, "push": _SPIN})
     return hub_part, Part("blade", template, blades, regions={"rotate": _SPIN, "push": _SPIN})
 

@@ -94,13 +94,15 @@ def column_body(p, height: float, radius: float) -> Part:
 
 def candlestick_body(p, height: float, radius: float) -> Part:
     """Thin turned stem with a knot (a ball) a third of the way up."""
-    rs = p.uniform("stem", 0.12, 0.2) * radius
-    zk = p.uniform("knot_height", 0.25, 0.45) * height
-    rk = p.uniform("knot", 2.0, 3.0) * rs
-    part = _body("candlestick_body", [[0.0, 0.0, 0.0], [rs, 0.0, 0.0], [rs, height, 0.0], [0.0, height, 0.0]],
-                 height, rs)
-    part.primitives.append(sphere(rk, pose=translation(0, 0, zk), role="body"))
-    return part
+    rs = min(p.uniform("stem", 0.12, 0.2) * radius, 0.018)
+    rk = p.uniform("knot", 1.8, 2.6) * rs
+    zk = max(p.uniform("knot_height", 0.25, 0.45) * height, rk + 0.01)  # the ball clears the foot
+    hf = p.uniform("foot", 0.06, 0.12) * height
+    prims = [frustum(min(2.2 * rs, radius), rs, hf, translation(0, 0, hf / 2), role="body"),
+             cylinder(rs, height, translation(0, 0, height / 2), role="body"),
+             sphere(rk, pose=translation(0, 0, zk), role="body")]
+    return Part("body", "candlestick_body", prims, anchors={"top": (0.0, 0.0, height), "radius": (rs, 0, 0)},
+                regions={"lift": Region(), "grasp": Region()})
 
 
 BODIES = {vase_body: 2.0, column_body: 2.0, candlestick_body: 1.0}
@@ -115,8 +117,9 @@ def _shell(template, r_bot: float, r_top: float, h: float, t: float, bulge: floa
     else:
         loop = [[r_bot - t, 0.0, 0.0], [r_bot, 0.0, bulge], [r_top, h, 0.0], [r_top - t, h, -bulge]]
         prim = lathe(loop, role="shade")
-    return Part("shade", template, [prim], anchors={"top": (0.0, 0.0, h), "bottom": (0.0, 0.0, 0.0),
-                                                    "top_radius": (r_top - t, 0, 0), "bottom_radius": (r_bot - t, 0, 0)},
+    anchors = {"top": (0.0, 0.0, h), "bottom": (0.0, 0.0, 0.0), "top_radius": (r_top - t, 0.0, 0.0),
+               "bottom_radius": (r_bot - t, 0.0, 0.0)}
+    return Part("shade", template, [prim], anchors=anchors,
                 regions={"lift": Region(), "grasp": Region()})
 
 
