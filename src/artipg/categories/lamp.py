@@ -36,10 +36,11 @@ FLOOR_SWITCHES = {"pull_chain": 1.0, "rotary": 1.0}
 FLOOR_BASES = {disc_base: 1.0, domed_base: 1.0}
 
 
-def _base_button(p, b, root, base):
-    """Round push switch on the base's flat ledge, in front, with its bezel collar."""
-    r, _, z = base.anchors["ledge"]
-    pose = translation(-r, 0, z) @ rot_y(math.pi / 2)
+def _base_button(p, b, root, base, r: float | None = None):
+    """Round push switch on the base's flat ledge (at radius ``r``, default the
+    ledge's), in front, with its bezel collar."""
+    r0, _, z = base.anchors["ledge"]
+    pose = translation(-(r0 if r is None else r), 0, z) @ rot_y(math.pi / 2)
     btn = round_button(p, radius=p.uniform("radius", 0.005, 0.008))
     root.add(button_bezel(p.scope("bezel"), btn, gap=0.0009), pose)
     mount_button(b, root, btn, pose)
@@ -133,10 +134,15 @@ def _socket_shade(ctx, p, parent, z_socket: float, r_neck: float, shade_tmpl, R:
     return rs, hs
 
 
-def _switch(ctx, p, root, kind: str, z_socket: float, rs: float, hs: float, r_neck: float, base, drop: float):
+def _switch(ctx, p, root, kind: str, z_socket: float, rs: float, hs: float, r_neck: float, base, drop: float,
+            body_r: float = 0.0):
     """The lamp's switch: a pull chain hanging ``drop`` at most under the socket, a
-    rotary knob on the socket, or a push button on the base."""
+    rotary knob on the socket, or a push button on the base's ledge clear of a body
+    of radius ``body_r`` (a rotary knob where the body leaves no room)."""
     b = ctx.builder
+    r_btn = max(base.anchors["ledge"][0], body_r + 0.016)
+    if kind == "button" and r_btn > base.anchors["radius"][0] - 0.013:
+        kind = "rotary"
     if kind == "pull_chain":
         L = p.uniform("chain", 0.6, 1.0) * (drop - 0.028)  # the pulled bob stays 4 mm off the body
         y = 0.5 * (rs + r_neck) + 0.001
@@ -152,7 +158,7 @@ def _switch(ctx, p, root, kind: str, z_socket: float, rs: float, hs: float, r_ne
         mount_knob(b, root, knob, translation(-rs, 0, z_socket + 0.5 * hs), continuous=False,
                    limits=(0.0, math.pi / 2))
     else:
-        _base_button(p.scope("button"), b, root, base)
+        _base_button(p.scope("button"), b, root, base, r_btn)
 
 
 def _table(ctx, root):
@@ -172,7 +178,8 @@ def _table(ctx, root):
     z_socket = zt + H + riser
     Hs = p.uniform("shade_height", 0.6, 0.9) * R + 0.05
     rs, hs = _socket_shade(ctx, p, root, z_socket, r_neck, ctx.choose("shade", SHADES), R, Hs)
-    _switch(ctx, p.scope("switch"), root, p.choice("switch", SWITCHES), z_socket, rs, hs, r_neck, base, riser)
+    _switch(ctx, p.scope("switch"), root, p.choice("switch", SWITCHES), z_socket, rs, hs, r_neck, base, riser,
+            float(abs(body.bounds()[:, :2]).max()))
 
 
 # ---------------------------------------------------------------- floor lamp
