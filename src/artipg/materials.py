@@ -70,6 +70,8 @@ MATERIAL = {
     "cover": "steel", "blade": "steel",
     "head": "plastic",
     "jaw": "plastic", "segment": "wood",
+    "hand": "aluminium", "pendulum": "brass", "bell": "steel", "rotor": "plastic", "guard": "steel",
+    "shade": "steel", "bulb": "glass",
 }
 DEFAULT_CLASS = "plastic"
 

@@ -56,6 +56,13 @@ SEMANTIC_LABELS: tuple[str, ...] = (
     "head",        # shaver head, razor cartridge, rotary head holder
     "jaw",         # a spring clip's leg (bag clip, plastic clothes peg)
     "segment",     # a folding rule's segment
+    "hand",        # clock hand
+    "pendulum",    # clock pendulum
+    "bell",        # alarm-clock bell
+    "rotor",       # fan rotor hub (its blades are "blade")
+    "guard",       # fan guard / grille
+    "shade",       # lamp shade or reflector head
+    "bulb",        # lamp bulb
 )
 
 LABEL_ID: dict[str, int] = {name: i for i, name in enumerate(SEMANTIC_LABELS)}

@@ -29,6 +29,7 @@ GROUP = {
     "lever": "accent", "hinge": "accent", "cap": "accent", "pump": "accent", "nozzle": "accent",
     "spout": "accent", "glass": "glass", "lens": "glass", "turntable": "glass", "screen": "display",
     "panel": "panel", "keyboard": "panel", "touchpad": "panel", "wheel": "rubber", "pedal": "rubber",
+    "hand": "accent", "pendulum": "accent", "bulb": "glass",
 }
 
 _FURNITURE = {"main": {"wood": 0.45, "lacquered_wood": 0.25, "painted_wood": 0.3},
@@ -97,6 +98,22 @@ SCHEMES: dict[str, dict] = {
                             "accent": {"neutral_plastic": 0.6, "chrome": 0.4}}},
     "lighter": {"families": {"main": {"glossy_plastic": 0.5, "matte_plastic": 0.3, "neutral_plastic": 0.2}},
                 "sub": {"flip_top": {"main": {"chrome": 0.4, "brushed_metal": 0.35, "black_metal": 0.25}}}},
+    "clock": {"groups": {"dial": "panel", "bell": "accent"},
+              "families": {"main": {"glossy_plastic": 0.35, "matte_plastic": 0.25, "brushed_metal": 0.2,
+                                    "black_metal": 0.2},
+                           "accent": {"black_metal": 0.5, "brass": 0.3, "chrome": 0.2},
+                           "panel": {"neutral_plastic": 1.0}, "glass": {"glass": 1.0}},
+              "sub": {"mantel_clock": {"main": {"wood": 0.5, "lacquered_wood": 0.5},
+                                       "accent": {"brass": 0.7, "black_metal": 0.3}}}},
+    "fan": {"groups": {"rotor": "accent", "blade": "accent"},
+            "families": {"main": {"matte_plastic": 0.45, "glossy_plastic": 0.35, "painted_metal": 0.2},
+                         "accent": {"neutral_plastic": 0.5, "glossy_plastic": 0.3, "chrome": 0.2}}},
+    "lamp": {"groups": {"shade": "shade", "bulb": "glass"},
+             "families": {"main": {"black_metal": 0.3, "brushed_metal": 0.25, "brass": 0.2, "painted_metal": 0.25},
+                          "shade": {"neutral_plastic": 0.4, "matte_plastic": 0.4, "glossy_plastic": 0.2},
+                          "accent": {"black_metal": 0.5, "chrome": 0.3, "neutral_plastic": 0.2},
+                          "glass": {"glass": 1.0}},
+             "sub": {"table_lamp": {"main": {"ceramic": 0.5, "glossy_plastic": 0.2, "brass": 0.3}}}},
 }
 
 

@@ -14,6 +14,7 @@ from artipg.categories import scissors, pliers, knife
 from artipg.categories import toaster, remote, keyboard, suitcase
 from artipg.categories import dispenser, shampoo, shaver
 from artipg.categories import clip, ruler, lighter
+from artipg.categories import clock, fan, lamp
 
 _MODULES = (storage_furniture, eyeglasses, stapler, bottle, switch, bucket, microwave, faucet, kitchen_pot, kettle,
             safe, box, laptop, door, window, trash_can,
@@ -23,6 +24,7 @@ _MODULES = (storage_furniture, eyeglasses, stapler, bottle, switch, bucket, micr
             toaster, remote, keyboard, suitcase,
             dispenser, shampoo, shaver,
             clip, ruler, lighter,
+            clock, fan, lamp,
             )
 
 REGISTRY = {m.RULE.name: m.RULE for m in _MODULES}
