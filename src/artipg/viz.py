@@ -20,6 +20,8 @@ from artipg.annotate.views import fit_camera, object_sphere, render_view
 from artipg.vocabulary import ACTIONABLE_ID, AFFORDANCES, SEMANTIC_LABELS, label_id
 
 COLOR_BY = ("semantic", "instance", "link", "actionable")
+#: Share of a glass pane's own colour in pictures; the rest is what lies behind it.
+GLASS_TINT = 0.35
 BACKGROUND = np.array([255, 255, 255], dtype=np.uint8)
 
 
@@ -99,7 +101,14 @@ def render_image(obj, qpos=None, width: int = 480, height: int = 360, azimuth: f
     labels, _ = _label_image(obj, view, color_by)
     # head light, a little above and to the left of the camera
     light = -cam.pose[:3, 2] - 0.35 * cam.pose[:3, 1] - 0.25 * cam.pose[:3, 0]
-    return shade(labels, view.normal, light / np.linalg.norm(light))
+    light /= np.linalg.norm(light)
+    img = shade(labels, view.normal, light)
+    glass = view.semantic == label_id("glass")
+    if glass.any():  # panes tint what lies behind them (a clock's hands, an oven's racks)
+        behind = render_view(obj, cam, qpos, exclude=("glass",))
+        back = shade(_label_image(obj, behind, color_by)[0], behind.normal, light)
+        img[glass] = np.rint(GLASS_TINT * img[glass] + (1.0 - GLASS_TINT) * back[glass]).astype(np.uint8)
+    return img
 
 
 def _items(objs_with_qpos):

@@ -21,6 +21,7 @@ import numpy as np
 import trimesh
 
 from artipg.annotate.mesh import posed_mesh
+from artipg.vocabulary import label_id
 
 #: Azimuth and elevation ranges (degrees) of the partial-view cameras (paper sec. 4.2).
 AZIMUTH_RANGE = (0.0, 360.0)
@@ -258,7 +259,7 @@ class View:
         return self.primitive >= 0
 
 
-def render_view(obj, cam: Camera, qpos=None, sections: int = 32) -> View:
+def render_view(obj, cam: Camera, qpos=None, sections: int = 32, exclude: tuple = ()) -> View:
     """Ray cast ``obj`` at ``qpos`` from ``cam``: depth, hit points, normals and labels.
 
     Parameters
@@ -269,8 +270,16 @@ def render_view(obj, cam: Camera, qpos=None, sections: int = 32) -> View:
         Joint state.
     sections : int
         Segments of curved primitives in the ray-cast mesh.
+    exclude : tuple of str
+        Semantic labels whose parts the rays pass through (pictures seen through glass).
     """
     mesh, face_prim = posed_mesh(obj, qpos, sections)
+    if exclude:
+        t = obj.primitive_table
+        ids = [label_id(name) for name in exclude]
+        keep = ~np.isin(t.part_semantic[t.prim_part[face_prim]], ids)
+        mesh = trimesh.Trimesh(mesh.vertices, mesh.faces[keep], process=False, validate=False)
+        face_prim = face_prim[keep]
     H, W = cam.height, cam.width
     n = H * W
     # only rays inside the object's projected bounding box can hit it
