@@ -67,7 +67,7 @@ MATERIAL = {
     "glass": "glass", "lens": "glass", "screen": "glass",
     "wheel": "rubber", "pedal": "rubber",
     "stand": "plastic", "sphere": "plastic", "clip": "steel", "refill": "plastic", "connector": "steel",
-    "cover": "steel", "blade": "steel",
+    "cover": "steel", "blade": "steel", "lock": "brass", "rail": "aluminium",
 }
 DEFAULT_CLASS = "plastic"
 

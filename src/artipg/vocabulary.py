@@ -53,6 +53,8 @@ SEMANTIC_LABELS: tuple[str, ...] = (
     "connector",   # USB plug, its sliding carriage
     "cover",       # swivel cover of a flash drive
     "blade",       # scissor, plier, knife blade or jaw
+    "lock",        # lock cylinder, keyhole escutcheon
+    "rail",        # drying-rack rail, rung or bar
 )
 
 LABEL_ID: dict[str, int] = {name: i for i, name in enumerate(SEMANTIC_LABELS)}

@@ -84,6 +84,8 @@ SCHEMES: dict[str, dict] = {
                 "families": {"main": {"painted_metal": 0.4, "black_metal": 0.3, "neutral_plastic": 0.3},
                              "accent": {"chrome": 0.6, "brushed_metal": 0.4}}},
     "switch": {"families": {"main": {"neutral_plastic": 1.0}, "accent": {"neutral_plastic": 1.0}}},
+    "door_handle": {"groups": {"handle": "main", "knob": "main"},
+                    "families": {"main": {"brushed_metal": 0.35, "chrome": 0.25, "stainless": 0.2, "black_metal": 0.2}}},
 }
 
 
