@@ -86,6 +86,7 @@ SCHEMES: dict[str, dict] = {
     "switch": {"families": {"main": {"neutral_plastic": 1.0}, "accent": {"neutral_plastic": 1.0}}},
     "door_handle": {"groups": {"handle": "main", "knob": "main"},
                     "families": {"main": {"brushed_metal": 0.35, "chrome": 0.25, "stainless": 0.2, "black_metal": 0.2}}},
+    "folding_rack": {"families": {"main": {"painted_metal": 0.4, "stainless": 0.3, "brushed_metal": 0.3}}},
 }
 
 
