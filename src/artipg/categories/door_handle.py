@@ -30,7 +30,7 @@ ROSE = {"radius": (0.025, 0.0315), "thickness": (0.008, 0.012)}
 PLATE = {"width": (0.038, 0.055), "thickness": (0.006, 0.012), "above": (0.045, 0.075), "margin": (0.04, 0.075)}
 LEVER = {"length": (0.11, 0.15), "bar_radius": (0.0075, 0.0105), "standoff": (0.04, 0.056),
          "hub_radius": (0.0115, 0.015), "bar_thickness": (0.007, 0.011), "bar_height": (0.014, 0.022)}
-KNOB = {"radius": (0.025, 0.031), "depth": (0.03, 0.042), "neck_radius": (0.009, 0.012), "neck_length": (0.012, 0.022)}
+KNOB = {"radius": (0.025, 0.031), "depth": (0.03, 0.042), "neck_radius": (0.009, 0.012), "neck_length": (0.008, 0.016)}
 TURN = {"boss_radius": (0.01, 0.014), "boss_depth": (0.004, 0.008), "wing_length": (0.028, 0.038),
         "wing_depth": (0.012, 0.018), "wing_thickness": (0.006, 0.009)}
 CYLINDER = {"plug_radius": (0.0085, 0.009), "stem_width": (0.01, 0.011), "stem_length": (0.014, 0.024),

@@ -99,7 +99,7 @@ def utility(ctx):
     zb = p.uniform("floor", 0.004, 0.007)
     zt = zb + hb + 0.004
     H = zt + p.uniform("cover", 0.003, 0.005)
-    nose = p.uniform("nose", 0.01, 0.02)
+    nose, drop = p.uniform("nose", 0.015, 0.03), p.uniform("grip_drop", 0.003, 0.007)
     tip_in = p.uniform("tip_in", 0.003, 0.008)  # the blade's tip inside the nose at rest
     cf = L - tip_in - lb + 0.02  # carrier front: the blade's back 20 mm sits in the carrier
     travel = tip_in + p.uniform("exposed", 0.015, min(0.03, lb - 0.026))
@@ -107,7 +107,7 @@ def utility(ctx):
     xn = min(cf - nl - 0.005, L - nose - 0.0095 - travel - nl)
     slot = (xn - 0.0015, xn + nl + travel + 0.0015)
     root = ctx.builder.create_link("handle")
-    root.add(channel_handle(L, H, wi, ts, zb, zt, slot, nose))
+    root.add(channel_handle(L, H, wi, ts, zb, zt, slot, nose, drop))
     link = ctx.builder.create_link("slider", root)
     link.set_joint("prismatic", translation(), axis=(1.0, 0.0, 0.0), limits=(0.0, travel))
     button = (p.uniform("thumb_length", 0.015, 0.022), wi + 2 * ts - 0.002, p.uniform("thumb_height", 0.004, 0.006), H)

@@ -1,7 +1,7 @@
 """Utility-knife parts: a channel handle and the blade carrier that slides in it.
 
-Frame: the handle along +x from its back end (x = 0) to its nose (x = ``L``), its
-bottom on z = 0, centred on y = 0. The channel (``wi`` wide, from z = ``zb`` to
+Frame: the handle along +x from its back end (x = 0) to its nose (x = ``L``), the
+channel's floor on z = 0 (the grip reaches below it), centred on y = 0. The channel (``wi`` wide, from z = ``zb`` to
 ``zt``) runs the whole length and is open at the nose; the top cover over it is cut
 by a slot from x = ``slot[0]`` to ``slot[1]`` through which the carrier's thumb slider
 rises. The carrier slides along +x (the blade comes out of the nose). Metres.
@@ -20,14 +20,18 @@ from artipg.model.part import Part, Region
 _XZ = rot_x(0.5 * math.pi)  # extrusion outline (x, z), extruded along y
 
 
-def channel_handle(L: float, H: float, wi: float, ts: float, zb: float, zt: float, slot, nose: float) -> Part:
-    """Side plates (``ts`` thick, their front top corner cut back by ``nose``), the
-    bottom bar under the channel, a back cap and the top cover on both sides of the slot."""
-    side = profile.polygon([(0.0, 0.0), (L, 0.0), (L, zt + 0.25 * (H - zt)), (L - nose, H), (0.0, H)])
+def channel_handle(L: float, H: float, wi: float, ts: float, zb: float, zt: float, slot, nose: float,
+                   drop: float) -> Part:
+    """Side plates (``ts`` thick, their front top corner cut back by ``nose``, the grip
+    behind 0.55 ``L`` ``drop`` deeper, z < 0), the bottom bar under the channel (down
+    to the grip's underside), a back cap and the top cover on both sides of the slot."""
+    bottom = [(0.0, -drop), (0.55 * L, -drop), (0.75 * L, 0.0)]
+    side = profile.polygon([*bottom, (L, 0.0), (L, zt + 0.25 * (H - zt)), (L - nose, H), (0.0, H)])
     prims = [extrusion([side], ts, pose=translation(0.0, s * (wi + ts) / 2, 0.0) @ _XZ, role="grip")
              for s in (1.0, -1.0)]
     y = wi / 2
-    prims += [cuboid_between((0.0, -y, 0.0), (L, y, zb), role="grip"),
+    floor = profile.polygon([*bottom, (L, 0.0), (L, zb), (0.0, zb)])
+    prims += [extrusion([floor], wi, pose=_XZ, role="grip"),
               cuboid_between((0.0, -y, zb), (0.004, y, zt), role="grip"),
               cuboid_between((0.0, -y, zt), (slot[0], y, H), role="grip"),
               cuboid_between((slot[1], -y, zt), (L - nose, y, H), role="grip")]
