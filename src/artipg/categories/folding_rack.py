@@ -5,9 +5,10 @@ wire, duplicated: their count varies), U-shaped swept leg frames (``leg``).
 - gullwing: a horizontal central frame (0.7-0.95 m long, y; 0.5-0.6 m deep, x; at
   0.85-1.0 m) with 6-10 rails across; a wing (0.35-0.5 m, 3-6 rails) on each end,
   hinged on an x axis, hanging down at rest and raised to level or beyond
-  (revolute 0..pi/2 + 0-0.3 rad); two nested U leg frames under the frame ends,
-  standing at rest and folding in under it (revolute, 0..0.3-1.6 rad: folded legs
-  stop short of the hanging wing or the other legs). Open: 1.4-1.95 m long.
+  (revolute 0..pi/2 + 0-0.3 rad); two nested U leg frames hinged either side of
+  the middle, crossing in an X at rest (0.35-0.5 rad off vertical) and folding back
+  towards their own ends (revolute, 0..0.55-0.8 rad, stopping 30 mm short of the
+  hanging wings). Open: 1.4-1.95 m long.
 - a_frame: two ladders (1.1-1.5 m, 0.6-1.0 m wide, 4-8 rails each) hinged at the
   top (y axis), one fixed, the other swinging shut towards it (revolute 0..2 beta
   minus the angle at which its tubes meet the other's rails; beta 0.22-0.35 rad is
@@ -59,25 +60,25 @@ def gullwing(ctx, root, rf, rr):
         link = b.create_link("wing", root)
         link.set_joint("revolute", translation(0.0, s * yh, H), axis=(s, 0.0, 0.0), limits=(0.0, up))
         _add(link, wing, frame_pose((0.0, 0.0, 0.0), X, -Z))
-    # legs: two nested inverted U frames hung under hinge bars across the frame; the
-    # narrow one folds only until its legs reach the wide one's top bar
-    e, rl, rh = p.uniform("leg_inset", 0.12, 0.2), rf, 0.6 * rf
+    # legs: two nested inverted U frames hung under hinge bars either side of the middle,
+    # crossing in an X; each folds back past the vertical towards its own end until its
+    # feet come 30 mm short of the wing hanging there
+    yp, rl, rh = p.uniform("pivot_offset", 0.06, 0.14), rf, 0.6 * rf
     wA = D - 4 * rf - 0.01
     wB = wA - 4 * rl - 2 * C
     z = H - rh - HINGE - rl
     bend = p.uniform("leg_bend", 1.5, 3.0) * rl
-    a = p.uniform("splay", 0.04, 0.12)
-    a = min(a, math.asin((e - 0.03) / (z / math.cos(a))))  # the feet stay 30 mm inside the frame ends
+    room = Lc / 2 - 0.03  # the feet stay this far inside the frame ends
+    a = min(p.uniform("cross", 0.35, 0.5), math.atan((room + yp) / z))
     L = z / math.cos(a)
-    bars = [cylinder(rh, D - 2 * rf, translation(0.0, s * (Lc / 2 - e), H) @ rot_y(0.5 * math.pi), role="hinge")
+    back = min(0.5 * math.pi - 0.02, math.asin(min(1.0, (room - yp) / L)))
+    bars = [cylinder(rh, D - 2 * rf, translation(0.0, s * yp, H) @ rot_y(0.5 * math.pi), role="hinge")
             for s in (1.0, -1.0)]
     root.add(Part("frame", "leg_hinges", bars))
-    for w, s, stop in ((wA, 1.0, Lc - e - 0.03), (wB, -1.0, Lc - 2 * e - 2 * rl - 2 * C)):
-        # folding in, the feet stop short of the other end (wide legs) or of the wide legs' top bar
-        fold = min(0.5 * math.pi - 0.02, math.asin(min(1.0, stop / L))) + a
+    for w, s in ((wA, 1.0), (wB, -1.0)):
         link = b.create_link("leg", root)
-        link.set_joint("revolute", translation(0.0, s * (Lc / 2 - e), z) @ rot_x(s * a), axis=(-s, 0.0, 0.0),
-                       limits=(0.0, fold))
+        link.set_joint("revolute", translation(0.0, s * yp, z) @ rot_x(-s * a), axis=(s, 0.0, 0.0),
+                       limits=(0.0, a + back))
         link.add(leg_frame(w, L, rl, bend))
 
 
