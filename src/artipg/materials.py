@@ -72,6 +72,7 @@ MATERIAL = {
     "jaw": "plastic", "segment": "wood",
     "hand": "aluminium", "pendulum": "brass", "bell": "steel", "rotor": "plastic", "guard": "steel",
     "shade": "steel", "bulb": "glass",
+    "lock": "brass", "rail": "aluminium",
 }
 DEFAULT_CLASS = "plastic"
 

@@ -63,6 +63,8 @@ SEMANTIC_LABELS: tuple[str, ...] = (
     "guard",       # fan guard / grille
     "shade",       # lamp shade or reflector head
     "bulb",        # lamp bulb
+    "lock",        # lock cylinder, keyhole escutcheon
+    "rail",        # drying-rack rail, rung or bar
 )
 
 LABEL_ID: dict[str, int] = {name: i for i, name in enumerate(SEMANTIC_LABELS)}

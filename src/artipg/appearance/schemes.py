@@ -114,6 +114,9 @@ SCHEMES: dict[str, dict] = {
                           "accent": {"black_metal": 0.5, "chrome": 0.3, "neutral_plastic": 0.2},
                           "glass": {"glass": 1.0}},
              "sub": {"table_lamp": {"main": {"ceramic": 0.5, "glossy_plastic": 0.2, "brass": 0.3}}}},
+    "door_handle": {"groups": {"handle": "main", "knob": "main"},
+                    "families": {"main": {"brushed_metal": 0.35, "chrome": 0.25, "stainless": 0.2, "black_metal": 0.2}}},
+    "folding_rack": {"families": {"main": {"painted_metal": 0.4, "stainless": 0.3, "brushed_metal": 0.3}}},
 }
 
 

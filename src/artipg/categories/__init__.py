@@ -15,6 +15,7 @@ from artipg.categories import toaster, remote, keyboard, suitcase
 from artipg.categories import dispenser, shampoo, shaver
 from artipg.categories import clip, ruler, lighter
 from artipg.categories import clock, fan, lamp
+from artipg.categories import door_handle, folding_rack
 
 _MODULES = (storage_furniture, eyeglasses, stapler, bottle, switch, bucket, microwave, faucet, kitchen_pot, kettle,
             safe, box, laptop, door, window, trash_can,
@@ -25,6 +26,7 @@ _MODULES = (storage_furniture, eyeglasses, stapler, bottle, switch, bucket, micr
             dispenser, shampoo, shaver,
             clip, ruler, lighter,
             clock, fan, lamp,
+            door_handle, folding_rack,
             )
 
 REGISTRY = {m.RULE.name: m.RULE for m in _MODULES}

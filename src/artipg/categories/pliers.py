@@ -58,7 +58,9 @@ def halves(ctx):
         link.add(pivot_plate(hand, R0, T, rp + PIN_CLEAR if i else 0.0, i == 0, (w0, g0, hw0)), ALONG_Y,
                  name=f"plate{i}")
         link.add(jaw(kind, hand, R0, Lj, w0, w1, T), ALONG_Y, name=f"jaw{i}")
-    root.add(rivet(rp, T, rp + p.uniform("head", 0.0012, 0.0025), p.uniform("head_height", 0.0006, 0.0012)))
+    # a head under 1 mm high is thinner than pybullet's 1 mm collision margin on its implicit
+    # cylinders, which then reach through the 0.6 mm gap into the moving plate (seed 19 jammed)
+    root.add(rivet(rp, T, rp + p.uniform("head", 0.0012, 0.0025), p.uniform("head_height", 0.001, 0.0018)))
     if ctx.sub == "locking":
         root.add(adjust_screw(-R0 - Lh + 0.002, -(g1 + 0.5 * hw1), 0.4 * Th, p.uniform("screw_length", 0.012, 0.02), Th),
                  ALONG_Y)
