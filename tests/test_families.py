@@ -327,3 +327,16 @@ def test_tapered_arcs_and_bad_radii_are_refused():
         rounded_box(0.1, 0.1, 0.1, 0.2)
     with pytest.raises(ValueError):
         la.lathe(profile.polygon([[-0.1, 0.0], [0.1, 0.0], [0.1, 0.1]]))
+
+
+def test_only_centred_straight_frusta_collide_as_cylinders():
+    """A four-vertex lathe profile closed on the axis is a frustum only when its ends are
+    flat, its sides straight and it is centred on z = 0: anything else keeps its hulls."""
+    from artipg.geometry import cylinder, frustum
+    from artipg.geometry.lathe import frustum_dims, lathe
+
+    assert frustum_dims(cylinder(0.1, 0.3)) == (0.1, 0.1, 0.3)
+    assert frustum_dims(frustum(0.1, 0.05, 0.3)) == (0.1, 0.05, 0.3)
+    off_centre = lathe(np.array([[0.0, 0.0, 0.0], [0.1, 0.0, 0.0], [0.1, 0.3, 0.0], [0.0, 0.3, 0.0]]))
+    domed = lathe(np.array([[0.0, -0.1, 0.0], [0.1, -0.1, 0.0], [0.1, 0.1, 0.3], [0.0, 0.1, 0.0]]))
+    assert frustum_dims(off_centre) is None and frustum_dims(domed) is None

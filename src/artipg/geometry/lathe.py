@@ -369,7 +369,11 @@ def frustum_dims(prim: Primitive) -> tuple | None:
     """``(r_bottom, r_top, height)`` of a primitive :func:`frustum` or :func:`cylinder`
     made (a straight four-segment profile closed on the axis), else None."""
     p = prim.params
-    if prim.geom is not _L4 or p[0] != 0.0 or p[12] != 0.0 or p[6] != 0.0 or p[16] < _FULL:
+    if prim.geom is not _L4 or p[0] != 0.0 or p[12] != 0.0 or p[16] < _FULL:
+        return None
+    straight = p[2] == 0.0 and p[6] == 0.0 and p[10] == 0.0
+    flat_ends = p[1] == p[5] and p[9] == p[13]
+    if not (straight and flat_ends and p[1] == -p[9]):  # a centred frustum, nothing else
         return None
     return p[4], p[8], p[9] - p[1]
 
