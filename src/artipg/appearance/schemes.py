@@ -84,6 +84,9 @@ SCHEMES: dict[str, dict] = {
                 "families": {"main": {"painted_metal": 0.4, "black_metal": 0.3, "neutral_plastic": 0.3},
                              "accent": {"chrome": 0.6, "brushed_metal": 0.4}}},
     "switch": {"families": {"main": {"neutral_plastic": 1.0}, "accent": {"neutral_plastic": 1.0}}},
+    "toilet": {"families": {"main": {"sanitary_ceramic": 1.0},
+                            "accent": {"chrome": 0.6, "brushed_metal": 0.2, "black_metal": 0.1, "neutral_plastic": 0.1},
+                            "panel": {"chrome": 0.4, "neutral_plastic": 0.6}}},
 }
 
 

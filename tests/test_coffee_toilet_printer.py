@@ -1,0 +1,61 @@
+"""Category-specific facts of toilets, coffee machines and printers: the joints each
+real object has, their directions and ranges, counts and clearances."""
+
+import math
+
+import numpy as np
+
+import artipg
+from artipg.templates.toilets import swing_limit
+
+SEEDS = range(10)
+
+
+def _joints(obj, name):
+    return [j for j in obj.movable_joints if j.child.rsplit("_", 1)[0] == name]
+
+
+def test_swing_limit_stops_before_an_obstacle_and_is_free_without_one():
+    rect = [((-0.45, -0.01), (-0.02, 0.0))]  # a 0.44 m slab lying along -x from the axis
+    assert swing_limit(rect, [], 1.9) == 1.9
+    # a wall 0.1 m behind the axis: the slab stands up and leans back until 4 mm off it
+    lim = swing_limit(rect, [(0.1, -0.5, 1.0)], 1.9, margin=0.004)
+    assert math.pi / 2 < lim < 1.9
+    c, s = math.cos(lim), math.sin(lim)
+    assert max(c * u + s * w for u in (-0.45, -0.01) for w in (-0.02, 0.0)) < 0.1 - 0.004
+
+
+def test_toilets_hinge_seat_and_lid_about_one_rear_axis():
+    subs = set()
+    for seed in SEEDS:
+        obj = artipg.generate("toilet", seed)
+        subs.add(obj.subcategory)
+        seat, lid = _joints(obj, "seat"), _joints(obj, "seat_lid")
+        assert len(seat) == 1 and seat[0].type == "revolute" and np.allclose(seat[0].axis, (0, 1, 0))
+        assert 1.4 < seat[0].limits[1] < 1.93  # 80-110 degrees: up against the lid, tank or wall
+        for lj in lid:  # same axis, the lid stays ahead of the seat so the seat never meets it
+            assert lj.type == "revolute" and np.allclose(lj.origin, seat[0].origin)
+            assert seat[0].limits[1] < lj.limits[1] <= 1.92
+        tank_lid = _joints(obj, "tank_lid")
+        assert len(tank_lid) == (0 if obj.subcategory == "wall_hung" else 1)
+        assert all(j.type == "prismatic" and np.allclose(j.axis, (0, 0, 1)) for j in tank_lid)
+        buttons, lever = _joints(obj, "button"), _joints(obj, "lever")
+        assert 1 <= len(buttons) + len(lever) <= 2
+        assert all(j.type == "prismatic" and j.limits[1] <= 0.007 for j in buttons)
+        assert all(j.type == "revolute" and np.allclose(j.axis, (1, 0, 0)) for j in lever)
+        if obj.subcategory == "one_piece":
+            assert buttons and not lever
+    assert subs == {"two_piece", "one_piece", "wall_hung"}
+    assert artipg.get_category("toilet").fixed_base
+
+
+def test_toilet_rim_height_and_footprint_are_real():
+    for seed in SEEDS:
+        obj = artipg.generate("toilet", seed)
+        seat = _joints(obj, "seat")[0]
+        rim = seat.origin[2, 3]
+        assert 0.39 < rim < 0.48  # the seat's top (hinge axis) above the floor
+        lo, hi = obj.bounds()
+        size = hi - lo
+        assert 0.33 <= size[1] <= 0.66 and 0.5 <= size[0] <= 0.9, size
+        assert size[2] <= (1.26 if obj.subcategory == "wall_hung" else 0.85), size
