@@ -59,3 +59,57 @@ def test_toilet_rim_height_and_footprint_are_real():
         size = hi - lo
         assert 0.33 <= size[1] <= 0.66 and 0.5 <= size[0] <= 0.9, size
         assert size[2] <= (1.26 if obj.subcategory == "wall_hung" else 0.85), size
+
+
+def test_toilet_bodies_wear_sanitary_white():
+    from artipg.appearance import materials_of
+    for seed in SEEDS:
+        obj = artipg.generate("toilet", seed)
+        mats = materials_of(obj)
+        body = [mats[p.name] for p in obj.parts if p.semantic == "body"]
+        assert all(m.family == "sanitary_ceramic" and min(m.color) > 0.8 for m in body)
+
+
+def _link_points(obj, name, q=None):
+    pc = obj.sample_points(4000, seed=0, qpos=q)
+    names = np.array(pc.link_names)[pc.link]
+    return pc.points[np.char.startswith(names.astype(str), name)]
+
+
+def test_coffee_machines_move_like_the_real_ones():
+    subs = set()
+    for seed in range(14):
+        obj = artipg.generate("coffee_machine", seed)
+        subs.add(obj.subcategory)
+        tray, buttons = _joints(obj, "tray"), _joints(obj, "button")
+        assert all(j.type == "prismatic" and j.limits[1] <= 0.007 for j in buttons)
+        if obj.subcategory == "drip":
+            lid, drawer, jug = _joints(obj, "lid"), _joints(obj, "drawer"), _joints(obj, "carafe")
+            assert len(lid) == 1 and np.allclose(lid[0].axis, (0, 1, 0)) and 1.2 <= lid[0].limits[1] <= 1.75
+            assert len(drawer) == 1 and np.allclose(drawer[0].axis, (-1, 0, 0))
+            assert len(jug) == 1 and jug[0].type == "prismatic" and not tray
+            assert 1 <= len(buttons) <= 3
+            # the carafe stands under the head: its top is below the filter drawer
+            assert _link_points(obj, "carafe")[:, 2].max() < _link_points(obj, "drawer")[:, 2].min()
+        elif obj.subcategory == "espresso":
+            pf, wand, knobs = _joints(obj, "portafilter"), _joints(obj, "wand"), _joints(obj, "knob")
+            assert len(pf) == 1 and np.allclose(pf[0].axis, (0, 0, 1)) and 0.5 < pf[0].limits[1] < 0.8
+            assert len(wand) == 1 and np.allclose(wand[0].axis, (1, 0, 0))
+            assert 1 <= len(knobs) <= 2 and len(tray) == 1 and np.allclose(tray[0].axis, (-1, 0, 0))
+        else:
+            lever, tank = _joints(obj, "lever"), _joints(obj, "tank")
+            assert len(lever) == 1 and np.allclose(lever[0].axis, (0, 1, 0)) and lever[0].limits[1] <= math.pi / 2
+            assert len(tank) == 1 and np.allclose(tank[0].axis, (0, 0, 1)) and len(tray) == 1
+            assert 1 <= len(buttons) <= 3
+    assert subs == {"drip", "espresso", "capsule"}
+
+
+def test_open_capsule_lever_and_tank_lift_clear_of_the_body():
+    for seed in range(14):
+        obj = artipg.generate("coffee_machine", seed)
+        if obj.subcategory != "capsule":
+            continue
+        lo, hi = obj.bounds()
+        q = {j.name: j.limits[1] for j in obj.movable_joints if j.child.startswith(("lever", "tank"))}
+        lo2, hi2 = obj.bounds(q)
+        assert hi2[2] > hi[2] + 0.05  # both rise well above the closed machine

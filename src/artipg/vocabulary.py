@@ -53,6 +53,8 @@ SEMANTIC_LABELS: tuple[str, ...] = (
     "connector",   # USB plug, its sliding carriage
     "cover",       # swivel cover of a flash drive
     "blade",       # scissor, plier, knife blade or jaw
+    "container",   # removable vessel of an appliance: coffee carafe, water tank
+    "portafilter",  # espresso machine's filter holder with its handle
 )
 
 LABEL_ID: dict[str, int] = {name: i for i, name in enumerate(SEMANTIC_LABELS)}

@@ -87,6 +87,11 @@ SCHEMES: dict[str, dict] = {
     "toilet": {"families": {"main": {"sanitary_ceramic": 1.0},
                             "accent": {"chrome": 0.6, "brushed_metal": 0.2, "black_metal": 0.1, "neutral_plastic": 0.1},
                             "panel": {"chrome": 0.4, "neutral_plastic": 0.6}}},
+    "coffee_machine": {"groups": {"portafilter": "accent"},
+                       "families": {"main": {"glossy_plastic": 0.2, "neutral_plastic": 0.3, "stainless": 0.4,
+                                             "painted_metal": 0.1},
+                                    "accent": {"chrome": 0.4, "black_metal": 0.3, "neutral_plastic": 0.3},
+                                    "panel": {"neutral_plastic": 1.0}, "glass": {"glass": 1.0}}},
 }
 
 
