@@ -113,3 +113,37 @@ def test_open_capsule_lever_and_tank_lift_clear_of_the_body():
         q = {j.name: j.limits[1] for j in obj.movable_joints if j.child.startswith(("lever", "tank"))}
         lo2, hi2 = obj.bounds(q)
         assert hi2[2] > hi[2] + 0.05  # both rise well above the closed machine
+
+
+def test_printers_open_their_paper_paths():
+    subs = set()
+    for seed in range(12):
+        obj = artipg.generate("printer", seed)
+        subs.add(obj.subcategory)
+        buttons = _joints(obj, "button")
+        assert buttons and all(j.type == "prismatic" and j.limits[1] <= 0.007 for j in buttons)
+        slides = _joints(obj, "tray") + _joints(obj, "drawer")
+        assert slides and all(j.type == "prismatic" and np.allclose(j.axis, (-1, 0, 0)) for j in slides)
+        lids = _joints(obj, "lid") + _joints(obj, "support") + _joints(obj, "flap") + _joints(obj, "adf")
+        assert all(j.type == "revolute" and np.allclose(j.axis, (0, 1, 0)) and 0.9 <= j.limits[1] <= 1.75
+                   for j in lids)
+        if obj.subcategory == "inkjet":
+            assert len(_joints(obj, "tray")) == 1 and len(_joints(obj, "support")) == 1 and len(_joints(obj, "lid")) == 1
+        elif obj.subcategory == "laser":
+            door = _joints(obj, "door")
+            assert len(door) == 1 and door[0].type == "revolute" and len(_joints(obj, "drawer")) == 1
+            assert len(_joints(obj, "flap")) == 1
+        else:  # scanner lid, cassette, output tray and a tilting control panel with its buttons
+            assert len(_joints(obj, "lid")) == 1 and len(_joints(obj, "drawer")) == 1 and len(_joints(obj, "tray")) == 1
+            panel = _joints(obj, "panel")
+            assert len(panel) == 1 and panel[0].type == "revolute"
+            assert all(j.parent == panel[0].child for j in buttons)
+    assert subs == {"inkjet", "laser", "all_in_one"}
+
+
+def test_printer_sizes_are_real():
+    for seed in range(12):
+        obj = artipg.generate("printer", seed)
+        lo, hi = obj.bounds()
+        d, w, h = hi - lo
+        assert 0.33 <= w <= 0.5 and 0.24 <= d <= 0.5 and 0.11 <= h <= 0.37, (obj.subcategory, d, w, h)

@@ -92,6 +92,8 @@ SCHEMES: dict[str, dict] = {
                                              "painted_metal": 0.1},
                                     "accent": {"chrome": 0.4, "black_metal": 0.3, "neutral_plastic": 0.3},
                                     "panel": {"neutral_plastic": 1.0}, "glass": {"glass": 1.0}}},
+    "printer": {"families": {"main": {"painted_metal": 1.0}, "accent": {"neutral_plastic": 1.0},
+                             "panel": {"neutral_plastic": 1.0}, "display": {"display": 1.0}}},
 }
 
 
