@@ -124,11 +124,13 @@ def test_printers_open_their_paper_paths():
         assert buttons and all(j.type == "prismatic" and j.limits[1] <= 0.007 for j in buttons)
         slides = _joints(obj, "tray") + _joints(obj, "drawer")
         assert slides and all(j.type == "prismatic" and np.allclose(j.axis, (-1, 0, 0)) for j in slides)
-        lids = _joints(obj, "lid") + _joints(obj, "support") + _joints(obj, "flap") + _joints(obj, "adf")
+        lids = _joints(obj, "lid") + _joints(obj, "flap") + _joints(obj, "adf")
+        lids += [j for j in _joints(obj, "support") if j.type == "revolute"]
+        assert all(np.allclose(j.axis, (0, 0, 1)) for j in _joints(obj, "support") if j.type == "prismatic")
         assert all(j.type == "revolute" and np.allclose(j.axis, (0, 1, 0)) and 0.9 <= j.limits[1] <= 1.75
                    for j in lids)
         if obj.subcategory == "inkjet":
-            assert len(_joints(obj, "tray")) == 1 and len(_joints(obj, "support")) == 1 and len(_joints(obj, "lid")) == 1
+            assert [len(_joints(obj, n)) for n in ("tray", "support", "lid")] == [1, 1, 1]
         elif obj.subcategory == "laser":
             door = _joints(obj, "door")
             assert len(door) == 1 and door[0].type == "revolute" and len(_joints(obj, "drawer")) == 1

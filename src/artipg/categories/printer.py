@@ -2,13 +2,15 @@
 
 Parts: a box housing with paper slots open at the front. Inkjet: an output tray that
 slides out of a front slot, a top (cartridge) cover over the front of the top and a
-rear paper support folded flat behind it, 1-4 buttons on the front. Laser: a paper
+rear paper support (folded flat behind it, or standing against the back face), 1-4
+buttons on the front. Laser: a paper
 cassette drawer in the bottom slot, a front cover over the toner bay hinged at its
 bottom edge, an output flap (paper stop) on the top, 1-4 buttons over the front
 cover. All-in-one: a cassette and an output tray, a scanner lid over the whole top,
 hinged at the back, often with an automatic document feeder (ADF) cover on it, and a
 tilting control panel on the front carrying a display and 2-5 buttons.
 Joints: trays and cassettes prismatic out of the front (-x), 60-90 % of their depth;
+a standing paper support prismatic up (+z), 50-80 % of its length;
 top cover, rear paper support, scanner lid, ADF cover and output flap revolute about
 their back edge (+y), 55-100 degrees; front cover and control panel revolute about
 their bottom front edge (outwards, -x), 30-90 degrees; buttons prismatic (3-6 mm).
@@ -18,7 +20,9 @@ x 0.35-0.45 x 0.22-0.35; all-in-one 0.38-0.48 x 0.3-0.42 x 0.18-0.3 (closed tray
 
 from __future__ import annotations
 
-from artipg.geometry.transforms import translation
+import math
+
+from artipg.geometry.transforms import rot_y, translation
 from artipg.rules import Category, Slot
 from artipg.templates.appliance import display
 from artipg.templates.controls import BUTTONS, mount_button_row
@@ -33,6 +37,7 @@ SUBS = {
     "all_in_one": ((0.38, 0.48), (0.3, 0.42), (0.18, 0.3)),
 }
 REST = 0.0008  # rest gap of lids and trays on the surface under them
+SUPPORTS = {"folding": 2.0, "sliding": 1.0}  # an inkjet's rear paper support
 
 
 def _lay_plate(ctx, parent, plate, x_hinge: float, z_surface: float, swing, name: str):
@@ -80,12 +85,25 @@ def body(ctx):
         w, d = W - 2 * p.uniform("slot_side", 0.04, 0.08), p.uniform("slot_depth", 0.4, 0.6) * D
         root.add(slotted_housing(p, D, W, H, [(z0, z0 + h, w, d)]))
         _output(ctx, root, D, z0, h, w, d)
-        lc = p.uniform("cover_share", 0.45, 0.6) * D  # the top cover; the paper support behind it
+        support = ctx.choose("paper_support", SUPPORTS)
+        if support == "folding":  # folded flat on the top behind the cover, it turns up
+            lc = p.uniform("cover_share", 0.45, 0.6) * D
+            ls = D - lc - 0.02
+            plate = hinged_plate(p.scope("support"), "tray", ls, p.uniform("support_width", 0.55, 0.8) * W,
+                                 actionable="hinge_door")
+            _lay_plate(ctx, root, plate, D / 2 - 0.004, H, (1.3, 1.75), "support")
+        else:  # standing against the back face, it slides up
+            lc = p.uniform("cover_share", 0.75, 0.9) * D
+            ls = p.uniform("support_length", 0.5, 0.8) * H
+            plate = hinged_plate(p.scope("support"), "tray", ls, p.uniform("support_width", 0.55, 0.8) * W,
+                                 actionable="slider_drawer")
+            t = -plate.anchors["bottom"][2]  # the plate frame turned so the plate stands up, its lip on top
+            link = b.create_link("support", root)
+            link.set_joint("prismatic", translation(D / 2 + REST + t, 0, H + 0.005 - ls), axis=(0.0, 0.0, 1.0),
+                           limits=(0.0, p.uniform("support_lift", 0.5, 0.8) * ls))
+            link.add(plate, rot_y(math.pi / 2))
         _lay_plate(ctx, root, hinged_plate(p.scope("cover"), "lid", lc - 0.006, W - 0.02), -D / 2 + lc, H,
                    (1.0, 1.4), "lid")
-        ls = D - lc - 0.02
-        _lay_plate(ctx, root, hinged_plate(p.scope("support"), "tray", ls, p.uniform("support_width", 0.55, 0.8) * W,
-                                           actionable="hinge_door"), D / 2 - 0.004, H, (1.3, 1.75), "support")
         k = p.integers("buttons", 1, 4)
         zb = z0 + h + (H - z0 - h) / 2
         _buttons(ctx, root, translation(-D / 2, 0, zb), -W / 2 + 0.02, k, 0.006, min(0.012, H - z0 - h - 0.014))

@@ -28,8 +28,8 @@ from artipg.geometry.transforms import rot_y, translation
 from artipg.model.part import Part
 from artipg.rules import Category, Slot
 from artipg.templates.controls import BUTTONS, mount_button_row, round_button
-from artipg.templates.toilets import (BOWLS, SEAT_LIDS, TANKS, flush_lever, hinge_barrel, seat_ring, swing_limit, tank_lid,
-                                      toilet_bowl)
+from artipg.templates.toilets import (BOWLS, SEAT_LIDS, TANKS, flush_lever, hinge_barrel, seat_ring, swing_limit,
+                                      tank_lid, toilet_bowl)
 
 # sub-category -> rim height, bowl depth, hinge-to-tank (or wall) gap, tank (depth, width, height) ranges
 SUBS = {

@@ -23,11 +23,10 @@ import numpy as np
 
 from artipg.geometry import cuboid, cuboid_between, cylinder, sphere
 from artipg.geometry.lathe import lathe
-from artipg.geometry.transforms import Placer, rot_y, translation
+from artipg.geometry.transforms import rot_y, translation
 from artipg.model.part import Deferred, Grasp, Part, Region
 from artipg.templates.handles import front_grasp
 
-_ALONG_X = Placer(rot_y(math.pi / 2))
 # gripper approaching +x (a slab's front edge), jaws closing along z (pinch)
 _EDGE = np.array([[0.0, 0.0, 1.0, 0.0], [1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 0.0, 1.0]])
 # gripper approaching -z (from above), jaws closing along y
