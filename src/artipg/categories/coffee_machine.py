@@ -2,13 +2,14 @@
 capsule machines.
 
 Parts: a housing of a back tower, a plinth and a head over the front bay where the cup
-or carafe stands. Drip: a water-tank lid on the tower top, a filter drawer in the
-head, a warming plate with a glass carafe on it, 1-3 buttons (power, programme) on
-the plinth front. Espresso: a group head under the head with a portafilter, a steam
+or carafe stands. Drip: a water-tank lid on the tower top, a filter basket in the
+head (a drawer, or swinging out on a side hinge), a warming plate with a glass carafe
+on it, 1-3 buttons (power, programme) on the plinth front. Espresso: a group head under the head with a portafilter, a steam
 wand beside it, 1-2 knobs (steam, hot water) and 0-4 buttons on the head front, a
 water-tank lid on top, a drip tray in the bay. Capsule: a capsule lever over the head,
 a water tank standing behind the tower, 1-3 buttons on the head front, a drip tray.
-Joints: tank lids revolute about their back edge (+y), 70-100 degrees; filter drawer
+Joints: tank lids revolute about their back edge (+y), 70-100 degrees; swing-out
+filter baskets revolute about a vertical front edge, 75-100 degrees; filter drawer
 and drip trays prismatic out of the front (-x), 60-90 % of their depth; carafe
 prismatic out of the front (slid off the warming plate); portafilter revolute about
 the group head's vertical axis, 35-45 degrees from locked; steam wand revolute about x,
@@ -27,8 +28,9 @@ from artipg.geometry.transforms import translation
 from artipg.model.part import Part
 from artipg.rules import Category, Slot
 from artipg.templates.coffee import (capsule_lever, carafe, coffee_housing, drip_tray, portafilter, steam_wand,
-                                     top_lid, water_tank)
+                                     swing_basket, top_lid, water_tank)
 from artipg.templates.controls import BUTTONS, KNOBS, mount_button_row, mount_knob
+from artipg.templates.mounting import mount_hinged
 from artipg.templates.panels import DRAWERS
 
 # sub-category -> depth, width, height, bay depth (share of depth), head height ranges (metres)
@@ -37,6 +39,7 @@ SUBS = {
     "espresso": ((0.25, 0.35), (0.22, 0.34), (0.3, 0.4), (0.38, 0.5), (0.08, 0.12)),
     "capsule": ((0.22, 0.3), (0.11, 0.2), (0.24, 0.33), (0.38, 0.5), (0.08, 0.11)),
 }
+FILTERS = {"drawer": 1.0, "swing": 1.0}  # a drip machine's filter basket slides or swings out
 REST = 0.0008  # rest gap of lids, trays and carafes on the surface under them
 
 
@@ -68,14 +71,23 @@ def drip(ctx):
     p, b = ctx.p, ctx.builder
     (_, y0, z0), (_, y1, z1) = housing.anchors["cavity_lo"], housing.anchors["cavity_hi"]
     ch, cw = z1 - z0, y1 - y0
-    t = p.uniform("drawer_front", 0.008, 0.014)
-    drawer = ctx.choose("drawer", DRAWERS)(p.scope("drawer"), cw + 0.008, ch + 0.006, bay - 0.012,
-                                           (-cw / 2 + 0.0015, cw / 2 - 0.0015, -ch / 2 + 0.0015, ch / 2 - 0.0015),
-                                           thickness=t)
-    link = b.create_link("drawer", root)
-    link.set_joint("prismatic", translation(-D / 2, 0, (z0 + z1) / 2), axis=(-1.0, 0.0, 0.0),
-                   limits=(0.0, p.uniform("drawer_pull", 0.6, 0.9) * (bay - 0.012)))
-    link.add(drawer)
+    if ctx.choose("filter", FILTERS) == "swing":
+        # a cup of radius <= 0.2 of the cavity width sweeps inside the cavity: every
+        # point behind the panel stays within the cavity width of the hinge line
+        rc = min(p.uniform("cup_radius", 0.035, 0.055), 0.2 * cw, (bay - 0.03) / 2)
+        basket = swing_basket(p.scope("basket"), cw + 0.008, ch + 0.006, rc)
+        side = "+y" if p.flag("hinge_left", 0.5) else "-y"
+        mount_hinged(b, root, basket, front_x=-D / 2, center_yz=(0.0, (z0 + z1) / 2), size_yz=(cw + 0.008, ch + 0.006),
+                     side=side, limits=(0.0, p.uniform("basket_swing", 1.3, 1.75)), name="drawer")
+    else:
+        t = p.uniform("drawer_front", 0.008, 0.014)
+        drawer = ctx.choose("drawer", DRAWERS)(p.scope("drawer"), cw + 0.008, ch + 0.006, bay - 0.012,
+                                               (-cw / 2 + 0.0015, cw / 2 - 0.0015, -ch / 2 + 0.0015, ch / 2 - 0.0015),
+                                               thickness=t)
+        link = b.create_link("drawer", root)
+        link.set_joint("prismatic", translation(-D / 2, 0, (z0 + z1) / 2), axis=(-1.0, 0.0, 0.0),
+                       limits=(0.0, p.uniform("drawer_pull", 0.6, 0.9) * (bay - 0.012)))
+        link.add(drawer)
     xc = -D / 2 + bay / 2
     R = min(p.uniform("carafe_radius", 0.06, 0.08), 0.45 * bay - 0.012, 0.45 * W)
     pt = p.uniform("plate", 0.004, 0.008)

@@ -7,6 +7,7 @@ Frames:
   ``bay`` deep, between the plinth top ``floor`` and the head's underside ``roof``.
 - ``drip_tray``, ``water_tank``: origin at the centre of the part's front bottom edge,
   the part extends along +x and up +z (slide them with a prismatic joint).
+- ``swing_basket``: front-panel convention (back face on x = 0, the cup behind it).
 - ``carafe``: origin at the centre of its base, +z up; the handle faces -x.
 - ``top_lid``, ``capsule_lever``: the hinge frame, origin on the hinge axis (+y) at
   the back edge, the part extends along -x from it; positive rotation lifts the front.
@@ -26,6 +27,7 @@ from artipg.geometry.lathe import lathe
 from artipg.geometry.transforms import rot_y, translation
 from artipg.model.part import Deferred, Grasp, Part, Region
 from artipg.templates.handles import front_grasp
+from artipg.templates.panels import door_edge_grasps
 
 # gripper approaching +x (a slab's front edge), jaws closing along z (pinch)
 _EDGE = np.array([[0.0, 0.0, 1.0, 0.0], [1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 0.0, 1.0]])
@@ -108,6 +110,21 @@ def top_lid(p, depth: float, width: float) -> Part:
                 regions={"lift": Region(("slab", "fin"), box), "grasp": Region(("fin",))},
                 grasps=Deferred.one(_top_pinch, -depth + ft / 2, 0.5 * fh, ft),
                 actionable="hinge_lid")
+
+
+def swing_basket(p, width: float, height: float, radius: float) -> Part:
+    """Swing-out filter basket: a front panel ``width`` x ``height`` (front-panel
+    convention, 8-14 mm thick) carrying a round filter cup of ``radius`` behind it
+    (x > 0), 2-4 mm inside the panel's outline in z. Hinge it on a side edge."""
+    t = p.uniform("thickness", 0.008, 0.014)
+    hc = height - 2 * p.uniform("cup_inset", 0.004, 0.006)
+    prims = [cuboid(t, width, height, translation(-t / 2, 0, 0), role="panel"),
+             cylinder(radius, hc, translation(radius + 0.001, 0, 0), role="cup")]
+    front = np.array([[-t - 1e-4, -width / 2, -height / 2], [-t + 1e-4, width / 2, height / 2]])
+    return Part("drawer", "swing_basket", prims,
+                anchors={"front": (-t, 0.0, 0.0), "edge_+y": (-t, width / 2, 0.0), "edge_-y": (-t, -width / 2, 0.0)},
+                regions={"push": Region(("panel",), front), "pull": Region(("panel",), front)},
+                grasps=Deferred(door_edge_grasps, t, width, height), actionable="hinge_door")
 
 
 def carafe(p, radius: float, height: float) -> Part:
