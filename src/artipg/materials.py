@@ -39,7 +39,8 @@ CLASS_DENSITY = {
 #: (weight 0: allowed when the scheme asks for it, never drawn by default).
 FINISHES = {
     "wood": {"wood": 0.45, "lacquered_wood": 0.25, "painted_wood": 0.3},
-    "plastic": {"matte_plastic": 0.5, "glossy_plastic": 0.3, "neutral_plastic": 0.2, "chrome": 0.0},
+    "plastic": {"matte_plastic": 0.5, "glossy_plastic": 0.3, "neutral_plastic": 0.2, "chrome": 0.0,
+                "sanitary_ceramic": 0.0},
     "aluminium": {"brushed_metal": 0.4, "chrome": 0.2, "stainless": 0.2, "black_metal": 0.2, "painted_metal": 0.0},
     "steel": {"stainless": 0.3, "chrome": 0.2, "black_metal": 0.3, "brushed_metal": 0.2, "painted_metal": 0.0},
     "brass": {"chrome": 0.5, "brushed_metal": 0.2, "brass": 0.15, "black_metal": 0.15},
@@ -48,7 +49,8 @@ FINISHES = {
     "insulated": {"painted_metal": 0.6, "stainless": 0.4},
     "shell": {"painted_metal": 0.5, "stainless": 0.3, "matte_plastic": 0.1, "glossy_plastic": 0.1,
               "neutral_plastic": 0.0, "chrome": 0.0, "brushed_metal": 0.0, "black_metal": 0.0, "brass": 0.0,
-              "glass": 0.0, "tinted_glass": 0.0, "ceramic": 0.0, "wood": 0.0, "lacquered_wood": 0.0, "painted_wood": 0.0},
+              "glass": 0.0, "tinted_glass": 0.0, "ceramic": 0.0, "wood": 0.0, "lacquered_wood": 0.0, "painted_wood": 0.0,
+              "sanitary_ceramic": 0.0},
     "ceramic": {"ceramic": 1.0},
     "fabric": {"fabric": 1.0},
 }

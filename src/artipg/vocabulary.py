@@ -65,6 +65,8 @@ SEMANTIC_LABELS: tuple[str, ...] = (
     "bulb",        # lamp bulb
     "lock",        # lock cylinder, keyhole escutcheon
     "rail",        # drying-rack rail, rung or bar
+    "container",   # removable vessel of an appliance: coffee carafe, water tank
+    "portafilter",  # espresso machine's filter holder with its handle
 )
 
 LABEL_ID: dict[str, int] = {name: i for i, name in enumerate(SEMANTIC_LABELS)}

@@ -82,6 +82,9 @@ FAMILIES: dict[str, Family] = {
                        (0.12, 0.12, 0.13)), roughness=(0.08, 0.2), strength=0.02, jitter=0.03),
     "fabric": Family(((0.45, 0.46, 0.48), (0.18, 0.18, 0.20), (0.16, 0.21, 0.33), (0.72, 0.66, 0.56),
                       (0.35, 0.18, 0.16)), roughness=(0.85, 0.95), strength=0.12, jitter=0.05),
+    # sanitary ware (vitreous china, white duroplast seats): white, bone, biscuit, pergamon
+    "sanitary_ceramic": Family(((0.96, 0.96, 0.95), (0.95, 0.94, 0.90), (0.93, 0.90, 0.83), (0.90, 0.88, 0.82)),
+                               roughness=(0.05, 0.15), strength=0.01, jitter=0.02),
 }
 
 

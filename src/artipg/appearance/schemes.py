@@ -117,6 +117,16 @@ SCHEMES: dict[str, dict] = {
     "door_handle": {"groups": {"handle": "main", "knob": "main"},
                     "families": {"main": {"brushed_metal": 0.35, "chrome": 0.25, "stainless": 0.2, "black_metal": 0.2}}},
     "folding_rack": {"families": {"main": {"painted_metal": 0.4, "stainless": 0.3, "brushed_metal": 0.3}}},
+    "toilet": {"families": {"main": {"sanitary_ceramic": 1.0},
+                            "accent": {"chrome": 0.6, "brushed_metal": 0.2, "black_metal": 0.1, "neutral_plastic": 0.1},
+                            "panel": {"chrome": 0.4, "neutral_plastic": 0.6}}},
+    "coffee_machine": {"groups": {"portafilter": "accent"},
+                       "families": {"main": {"glossy_plastic": 0.2, "neutral_plastic": 0.3, "stainless": 0.4,
+                                             "painted_metal": 0.1},
+                                    "accent": {"chrome": 0.4, "black_metal": 0.3, "neutral_plastic": 0.3},
+                                    "panel": {"neutral_plastic": 1.0}, "glass": {"glass": 1.0}}},
+    "printer": {"families": {"main": {"painted_metal": 1.0}, "accent": {"neutral_plastic": 1.0},
+                             "panel": {"neutral_plastic": 1.0}, "display": {"display": 1.0}}},
 }
 
 

@@ -16,6 +16,7 @@ from artipg.categories import dispenser, shampoo, shaver
 from artipg.categories import clip, ruler, lighter
 from artipg.categories import clock, fan, lamp
 from artipg.categories import door_handle, folding_rack
+from artipg.categories import toilet, coffee_machine, printer
 
 _MODULES = (storage_furniture, eyeglasses, stapler, bottle, switch, bucket, microwave, faucet, kitchen_pot, kettle,
             safe, box, laptop, door, window, trash_can,
@@ -27,6 +28,7 @@ _MODULES = (storage_furniture, eyeglasses, stapler, bottle, switch, bucket, micr
             clip, ruler, lighter,
             clock, fan, lamp,
             door_handle, folding_rack,
+            toilet, coffee_machine, printer,
             )
 
 REGISTRY = {m.RULE.name: m.RULE for m in _MODULES}
