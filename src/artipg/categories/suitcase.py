@@ -23,7 +23,7 @@ from artipg.geometry import cuboid_between
 from artipg.geometry.transforms import translation
 from artipg.model.part import Part
 from artipg.rules import Category, Slot
-from artipg.templates.luggage import (GAP, back_shell, flip_grip, fork, front_shell, grip_mounts,
+from artipg.templates.luggage import (GAP, MOUNT_LENGTH, back_shell, flip_grip, fork, front_shell, grip_mounts,
                                       telescopic_handle, wheel)
 from artipg.templates.mounting import mount_hinged
 
@@ -69,9 +69,13 @@ def handles(ctx):
     grips = [("top", translation(xh, 0, H), min(p.uniform("top_width", 0.025, 0.035), xh - seam - 0.01),
               p.uniform("top_length", 0.12, 0.18))]
     if ctx.sub == "large_spinner" or p.flag("side_handle", 0.7):
-        x_s = (seam + D / 2) / 2 + p.uniform("side_offset", -0.2, 0.2) * (D / 2 - seam)
-        grips.append(("side", translation(x_s, -W / 2, (zb + H) / 2 - 0.015) @ SIDE, 0.03,
-                      min(p.uniform("side_length", 0.12, 0.16), 0.9 * (D / 2 - seam) - 0.05)))
+        # the handle and its mounts stay on the back shell: the lid's free edge sweeps out
+        # past the side face as it opens, so nothing on that face may reach over the seam
+        reach = GAP + MOUNT_LENGTH[1] + 0.005  # beyond either end of the grip
+        length = min(p.uniform("side_length", 0.12, 0.16), D / 2 - seam - 2 * reach)
+        play = (D / 2 - seam) / 2 - reach - length / 2
+        x_s = (seam + D / 2) / 2 + p.uniform("side_offset", -0.5, 0.5) * play
+        grips.append(("side", translation(x_s, -W / 2, (zb + H) / 2 - 0.015) @ SIDE, 0.03, length))
     for name, pose, w, length in grips:
         q = p.scope(name)
         grip = flip_grip(q, length, width=w)

@@ -21,6 +21,7 @@ from artipg.geometry.transforms import rot_x
 from artipg.model.part import Part, Region
 
 GAP = 0.001  # running clearance of moving parts
+MOUNT_LENGTH = (0.015, 0.025)  # metres: a carry handle's end blocks, along the grip
 _AXLE_Y = rot_x(math.pi / 2)  # cylinder's z along y
 
 
@@ -80,8 +81,9 @@ def flip_grip(p, length: float, width: float | None = None) -> Part:
 
 
 def grip_mounts(p, length: float, width: float, thickness: float) -> Part:
-    """The fixed end blocks a :func:`flip_grip` turns between (same frame, on the surface)."""
-    m = p.uniform("mount_length", 0.015, 0.025)
+    """The fixed end blocks a :func:`flip_grip` turns between (same frame, on the surface),
+    each ``MOUNT_LENGTH`` long beyond ``GAP`` past either end of the grip."""
+    m = p.uniform("mount_length", *MOUNT_LENGTH)
     z0, z1 = -thickness / 2 - GAP, thickness / 2 + 0.002
     y0 = length / 2 + GAP
     prims = [cuboid_between((-width, s * y0 if s > 0 else -y0 - m, z0), (0.0, y0 + m if s > 0 else -y0, z1),
