@@ -12,12 +12,14 @@ from artipg.categories import table, chair, refrigerator, dishwasher, oven, wash
 from artipg.categories import display, globe, mug, pen, glue_stick, usb
 from artipg.categories import scissors, pliers, knife
 from artipg.categories import toaster, remote, keyboard, suitcase
+from artipg.categories import camera
 
 _MODULES = (storage_furniture, eyeglasses, stapler, bottle, switch, bucket, microwave, faucet, kitchen_pot, kettle,
             safe, box, laptop, door, window, trash_can,
             table, chair, refrigerator, dishwasher, oven, washing_machine,
             display, globe, mug, pen, glue_stick, usb,
             scissors, pliers, knife,
-            toaster, remote, keyboard, suitcase)
+            toaster, remote, keyboard, suitcase,
+            camera)
 
 REGISTRY = {m.RULE.name: m.RULE for m in _MODULES}

@@ -1,0 +1,56 @@
+"""Category-specific properties of camera, mouse, phone and cart that the shared
+per-category tests do not see: joint kinds and axes per sub-category, travel of
+buttons, lenses pointing forward, zoom tubes extending, counts of duplicated parts."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import artipg
+
+SEEDS = range(0, 48, 3)
+
+
+def _world_axis(obj, joint) -> np.ndarray:
+    """Joint axis in the object frame at rest."""
+    i = obj.link_index[joint.child]
+    return obj.link_poses()[i][:3, :3] @ joint.axis
+
+
+def _by_child(obj) -> dict:
+    out: dict = {}
+    for j in obj.movable_joints:
+        out.setdefault(j.child.rsplit("_", 1)[0], []).append(j)
+    return out
+
+
+def _xmin(obj, qpos=None) -> float:
+    return float(obj.bounds(qpos)[0, 0])
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_camera_joints_per_subcategory(seed):
+    obj = artipg.generate("camera", seed)
+    k = _by_child(obj)
+    for j in k["button"]:  # shutter and top buttons: short presses into the body
+        assert j.type == "prismatic" and 0.0005 < j.limits[1] <= 0.002
+    if obj.subcategory == "dslr":
+        (zoom,) = k["zoom_ring"]
+        assert zoom.type == "revolute" and 1.0 < zoom.limits[1] < 1.7
+        assert abs(_world_axis(obj, zoom) @ (-1.0, 0.0, 0.0)) == pytest.approx(1.0)  # the optical axis
+        assert k["mode_dial"][0].type in ("revolute", "continuous")
+        lens = [i for i, p in enumerate(obj.parts) if p.semantic in ("lens", "glass")]
+        front = obj.sample_points(2000, seed=1, parts=lens).points[:, 0].min()
+        assert front == pytest.approx(_xmin(obj), abs=2e-3)  # the lens is the front of the camera
+    elif obj.subcategory == "compact":
+        tubes = k["zoom_tube"]
+        assert len(tubes) in (2, 3) and all(j.type == "prismatic" for j in tubes)
+        assert all(_world_axis(obj, j) @ (-1.0, 0.0, 0.0) == pytest.approx(1.0) for j in tubes)
+        hi = obj.limits()[:, 1]
+        assert _xmin(obj, hi) < _xmin(obj) - 0.01  # the zoom comes out of the front
+    else:
+        (door,) = k["film_door"]
+        assert door.type == "revolute" and door.limits[1] > 1.5
+    if obj.subcategory != "instant":
+        assert k["battery_door"][0].type == "revolute"
