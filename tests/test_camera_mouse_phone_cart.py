@@ -54,3 +54,28 @@ def test_camera_joints_per_subcategory(seed):
         assert door.type == "revolute" and door.limits[1] > 1.5
     if obj.subcategory != "instant":
         assert k["battery_door"][0].type == "revolute"
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_mouse_buttons_wheel_and_side_buttons(seed):
+    obj = artipg.generate("mouse", seed)
+    k = _by_child(obj)
+    main = k["button"]
+    assert len(main) == 2
+    for j in main:
+        axis = _world_axis(obj, j)
+        if j.type == "revolute":  # about a rear hinge along y: the front drops 0.8-1.5 mm
+            assert abs(axis[1]) == pytest.approx(1.0) and 0.005 < j.limits[1] < 0.03
+        else:
+            assert j.type == "prismatic" and axis[2] == pytest.approx(-1.0) and j.limits[1] <= 0.0015
+    (wheel,) = k["scroll_wheel"]
+    assert wheel.type == "continuous" and abs(_world_axis(obj, wheel)[1]) == pytest.approx(1.0)
+    wheel_top = obj.sample_points(1500, seed=1, parts=[i for i, p in enumerate(obj.parts)
+                                                       if p.semantic == "wheel"]).points[:, 2].max()
+    caps_top = obj.sample_points(1500, seed=1, parts=[i for i, p in enumerate(obj.parts)
+                                                      if p.semantic == "button"]).points[:, 2].max()
+    assert wheel_top > caps_top - 0.005  # the wheel stands proud of the buttons next to it
+    side = k.get("side_button", [])
+    lo, hi = {"office": (0, 2), "gaming": (2, 5), "travel": (0, 0)}[obj.subcategory]
+    assert lo <= len(side) <= hi
+    assert all(j.type == "prismatic" and _world_axis(obj, j)[1] == pytest.approx(1.0) for j in side)
