@@ -79,3 +79,26 @@ def test_mouse_buttons_wheel_and_side_buttons(seed):
     lo, hi = {"office": (0, 2), "gaming": (2, 5), "travel": (0, 0)}[obj.subcategory]
     assert lo <= len(side) <= hi
     assert all(j.type == "prismatic" and _world_axis(obj, j)[1] == pytest.approx(1.0) for j in side)
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_phone_joints_per_subcategory(seed):
+    obj = artipg.generate("phone", seed)
+    k = _by_child(obj)
+    for j in k.get("key", []) + k["side_key"]:
+        assert j.type == "prismatic" and 0.0003 < j.limits[1] <= 0.001
+    assert all(abs(_world_axis(obj, j)[1]) == pytest.approx(1.0) for j in k["side_key"])  # into the sides
+    if obj.subcategory == "flip":
+        (lid,) = k["lid"]
+        assert lid.type == "revolute" and 2.5 < lid.limits[1] < 3.0
+        assert abs(_world_axis(obj, lid)[1]) == pytest.approx(1.0)
+        hi = {lid.name: lid.limits[1] * 0.5}
+        assert obj.bounds(hi)[1, 2] > obj.bounds()[1, 2] + 0.03  # half open, the lid stands up
+    elif obj.subcategory == "slider":
+        (lid,) = k["lid"]
+        assert lid.type == "prismatic" and _world_axis(obj, lid)[0] == pytest.approx(1.0)
+        assert len([j for j in k["key"] if j.parent != lid.child]) == 12  # the keypad under the lid
+    if obj.subcategory in ("bar", "flip"):
+        assert len(k["key"]) == 15  # a navigation row of 3 and a 3 x 4 keypad
+    if obj.subcategory == "smartphone":
+        assert "key" not in k and "lid" not in k and len(k["side_key"]) >= 2
