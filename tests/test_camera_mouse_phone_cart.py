@@ -102,3 +102,28 @@ def test_phone_joints_per_subcategory(seed):
         assert len(k["key"]) == 15  # a navigation row of 3 and a 3 x 4 keypad
     if obj.subcategory == "smartphone":
         assert "key" not in k and "lid" not in k and len(k["side_key"]) >= 2
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_cart_wheels_casters_and_folding_parts(seed):
+    obj = artipg.generate("cart", seed)
+    k = _by_child(obj)
+    wheels = k["wheel"]
+    assert all(j.type == "continuous" and abs(_world_axis(obj, j)[1]) == pytest.approx(1.0) for j in wheels)
+    swivels = k.get("caster", [])
+    assert all(j.type == "continuous" and _world_axis(obj, j)[2] == pytest.approx(1.0) for j in swivels)
+    if obj.subcategory == "hand_truck":
+        assert len(wheels) == 2 and not swivels
+        (plate,) = k["nose_plate"]
+        assert plate.type == "revolute" and plate.limits[1] == pytest.approx(np.pi / 2)
+        up = obj.bounds({plate.name: np.pi / 2})
+        assert up[0, 0] > obj.bounds()[0, 0] + 0.1  # folded up, the plate no longer reaches forward
+    else:
+        assert len(wheels) == 4 and len(swivels) in (2, 4)
+        name = "seat_flap" if obj.subcategory == "shopping" else "handle"
+        (j,) = k[name]
+        assert j.type == "revolute" and j.limits[1] == pytest.approx(np.pi / 2)
+    # every wheel touches the floor at rest
+    idx = [i for i, p in enumerate(obj.parts) if p.semantic == "wheel"]
+    low = obj.sample_points(4000, seed=1, parts=idx).points[:, 2].min()
+    assert low == pytest.approx(0.0, abs=2e-3)

@@ -12,7 +12,7 @@ from artipg.categories import table, chair, refrigerator, dishwasher, oven, wash
 from artipg.categories import display, globe, mug, pen, glue_stick, usb
 from artipg.categories import scissors, pliers, knife
 from artipg.categories import toaster, remote, keyboard, suitcase
-from artipg.categories import camera, mouse, phone
+from artipg.categories import camera, mouse, phone, cart
 
 _MODULES = (storage_furniture, eyeglasses, stapler, bottle, switch, bucket, microwave, faucet, kitchen_pot, kettle,
             safe, box, laptop, door, window, trash_can,
@@ -20,6 +20,6 @@ _MODULES = (storage_furniture, eyeglasses, stapler, bottle, switch, bucket, micr
             display, globe, mug, pen, glue_stick, usb,
             scissors, pliers, knife,
             toaster, remote, keyboard, suitcase,
-            camera, mouse, phone)
+            camera, mouse, phone, cart)
 
 REGISTRY = {m.RULE.name: m.RULE for m in _MODULES}
