@@ -179,7 +179,7 @@ def casters(ctx):
 
 RULE = Category(
     name="cart",
-    subcategories={"shopping": 2.0, "platform": 1.5, "hand_truck": 1.5},
+    subcategories={"platform": 1.5, "shopping": 2.0, "hand_truck": 1.5},
     materials={"body": "steel", "base": "steel", "shelf": "plastic", "seat": "plastic", "flap": "steel",
                "handle": "steel", "hinge": "steel", "top": "wood"},
     mass_range=(4.0, 45.0),  # kg: platform carts 8-20, hand trucks 10-20, shopping carts 15-35
