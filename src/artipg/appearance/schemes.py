@@ -84,6 +84,17 @@ SCHEMES: dict[str, dict] = {
                 "families": {"main": {"painted_metal": 0.4, "black_metal": 0.3, "neutral_plastic": 0.3},
                              "accent": {"chrome": 0.6, "brushed_metal": 0.4}}},
     "switch": {"families": {"main": {"neutral_plastic": 1.0}, "accent": {"neutral_plastic": 1.0}}},
+    "camera": {"groups": {"lens": "main"},
+               "families": {"main": {"matte_plastic": 0.5, "black_metal": 0.3, "neutral_plastic": 0.2},
+                            "accent": {"black_metal": 0.4, "matte_plastic": 0.3, "chrome": 0.3}, "glass": {"glass": 1.0}},
+               "sub": {"instant": {"main": {"glossy_plastic": 0.6, "neutral_plastic": 0.4}}}},
+    "mouse": {"groups": {"button": "main"}, "families": {"main": {"matte_plastic": 0.5, "glossy_plastic": 0.3, "neutral_plastic": 0.2},
+                           "accent": {"matte_plastic": 0.6, "glossy_plastic": 0.4}}},
+    "phone": {"groups": {"lid": "main", "hinge": "main"},
+              "families": {"main": {"matte_plastic": 0.4, "glossy_plastic": 0.4, "neutral_plastic": 0.2},
+                           "accent": {"matte_plastic": 0.5, "neutral_plastic": 0.5}, "display": {"display": 1.0}}},
+    "cart": {"families": {"main": {"chrome": 0.4, "painted_metal": 0.3, "stainless": 0.3},
+                          "accent": {"black_metal": 0.5, "painted_metal": 0.5}}},
 }
 
 
