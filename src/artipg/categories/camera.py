@@ -15,9 +15,9 @@ continuous or revolute (300 degrees); DSLR screen fixed, tilting (hinged on its 
 edge, 80-90 degrees) or vari-angle (hinged on its left edge, up to 180 degrees);
 battery door revolute down about its front edge (90 degrees); instant cameras' film
 door revolute about the back's left edge (90-115 degrees).
-Sizes (metres, W x H x D of the body without lens): DSLR 0.122-0.148 x 0.093-0.115 x
-0.045-0.058 (+ a 0.018-0.03 grip; Canon 250D 122 x 93 x 70 overall, Nikon D7500 136 x 104
-x 73), lens 0.06-0.074 across, 0.05-0.095 long; compact
+Sizes (metres, W x H x D of the body without lens): DSLR 0.122-0.148 x 0.075-0.092 x
+0.045-0.058 (+ a 0.018-0.028 pentaprism hump and a 0.018-0.03 grip; Canon 250D 122 x 93 x
+70 overall, Nikon D7500 136 x 104 x 73), lens 0.06-0.074 across, 0.05-0.095 long; compact
 0.094-0.112 x 0.054-0.066 x 0.021-0.032; instant 0.1-0.15 x 0.105-0.125 x 0.06-0.095
 (Instax Mini 104-108 x 121 x 66; Polaroid Now 150 x 112 x 94).
 """
@@ -37,7 +37,7 @@ DOWN = rot_y(math.pi / 2)    # plate frames (outer face +x) turned to face -z: b
 BACK = rot_z(0.0)            # plate frames facing +x: the back face
 # sub-category -> width, height, depth, edge radius
 SUBS = {
-    "dslr": ((0.122, 0.148), (0.093, 0.115), (0.045, 0.058), (0.004, 0.008)),
+    "dslr": ((0.122, 0.148), (0.075, 0.092), (0.045, 0.058), (0.004, 0.008)),
     "compact": ((0.094, 0.112), (0.054, 0.066), (0.021, 0.032), (0.003, 0.006)),
     "instant": ((0.1, 0.15), (0.105, 0.125), (0.06, 0.095), (0.006, 0.014)),
 }
@@ -130,12 +130,14 @@ def dslr(ctx):
     else:
         link.set_joint("revolute", pose, axis=(0.0, 0.0, 1.0), limits=(0.0, p.uniform("dial_turn", 4.5, 5.5)))
     link.add(dial)
-    _kit_lens(ctx, R, yl, zl, -D / 2)
+    _kit_lens(ctx, R, yl, zl, -D / 2, D + gd)
     _rear_screen(ctx, W, H, D, r, pocket[4])
 
 
-def _kit_lens(ctx, R, yl, zl, xf):
-    """Zoom lens on the axis (yl, zl) from the body's front face at x = ``xf``."""
+def _kit_lens(ctx, R, yl, zl, xf, depth):
+    """Zoom lens on the axis (yl, zl) from the body's front face at x = ``xf``; at most
+    1.05 x the body's ``depth`` (with its grip) long, so the camera stands on its base
+    (longer lenses tip a real camera onto the lens)."""
     p, b = ctx.p.scope("lens"), ctx.builder
     root = ctx.out["body"][0]
     tr = p.uniform("ring_thickness", 0.0025, 0.004)
@@ -144,7 +146,7 @@ def _kit_lens(ctx, R, yl, zl, xf):
     focus = p.flag("focus_ring", 0.75)
     lo = p.uniform("focus_length", 0.008, 0.015) if focus else 0.0
     lfr = p.uniform("front_length", 0.008, 0.02)
-    L = p.uniform("length", 0.05, 0.095)
+    L = min(p.uniform("length", 0.05, 0.095), 1.05 * depth)
     gap = 0.0008
     lm = max(0.004, L - lf - lz - lo - lfr - 4 * gap)
     x = 0.0
@@ -279,7 +281,7 @@ def instant(ctx):
 
 RULE = Category(
     name="camera",
-    subcategories={"dslr": 2.0, "compact": 1.5, "instant": 1.0},
+    subcategories={"instant": 1.0, "compact": 1.5, "dslr": 2.0},
     materials={"body": "shell", "lens": "shell", "door": "plastic", "screen": "plastic", "dial": "plastic"},
     mass_range=(0.08, 1.6),  # kg: compacts ~0.15-0.3, instant cameras ~0.3-0.5, DSLRs with kit lens 0.6-1.2
     slots=(Slot("body", body), Slot("battery_door", battery_door, after=("body",)),

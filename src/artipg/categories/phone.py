@@ -1,7 +1,7 @@
 """Mobile phones lying on a table, display up, earpiece end at +x: flip (clamshell)
 phones, slider phones, bar (candy-bar) keypad phones and smartphones.
 
-Parts: flip phones a lower half with a navigation row and a 3 x 4 keypad 
+Parts: flip phones a lower half with a navigation row and a 3 x 4 keypad
 and an upper half (the lid) with an inner display facing the keypad and often an outer
 one, joined by hinge knuckles (two on the lower half, one on the lid); slider phones a
 lower half with a 3 x 4 keypad between two slide rails and an upper half (the lid)
@@ -13,9 +13,10 @@ prismatic along +x far enough to uncover the keypad (0.035-0.05 m); keys prismat
 into the face (0.5-1 mm); side keys prismatic into the side (0.4-0.7 mm).
 Sizes (metres, L x W x T): smartphone 0.14-0.165 x 0.066-0.078 x 0.007-0.009 (iPhone
 15 148 x 72 x 7.8); bar phone 0.105-0.13 x 0.045-0.055 x 0.012-0.018 (Nokia 105 120
-x 50 x 14.5); flip (closed) 0.085-0.105 x 0.045-0.054 x 0.017-0.024 (Motorola RAZR V3
-98 x 53 x 14); slider (closed) 0.09-0.11 x 0.046-0.055 x 0.015-0.022 (Nokia N95 99 x
-53 x 21).
+x 50 x 14.5); flip (closed) 0.08-0.1 x 0.045-0.054 x 0.019-0.025 (Motorola RAZR V3
+98 x 53 x 14, Samsung E1150 90 x 46 x 19); slider (closed) 0.09-0.11 x 0.046-0.055 x
+0.019-0.025 (Nokia N95 99 x 53 x 21). Keys are flat (standing 0.3 mm off their face,
+0.6-1.2 mm proud) so they need no collars.
 """
 
 from __future__ import annotations
