@@ -9,7 +9,9 @@ casters and a U-shaped folding handle (two tube posts and a grip) hinged at its 
 end; hand trucks two tube rails with 2-4 duplicated cross tubes and a grip on top, a
 nose plate on the floor in front, two wheels on an axle behind the rails.
 Casters are a fork on a swivel with a wheel on its axle (luggage templates); the
-rear pair of a shopping or platform cart is sometimes fixed (no swivel).
+rear pair of a shopping or platform cart is sometimes fixed (no swivel). Wheels are
+solid, tyred (a torus on a hub; casters only) or disc wheels (a flat tyre round a
+hub).
 Joints: swivels continuous about z, wheels continuous about their axles (y); child
 seat flap revolute out towards the handle (90 degrees); platform handle revolute from
 folded flat on the deck (rest) to upright (90 degrees); hand-truck nose plate revolute
@@ -29,9 +31,9 @@ import numpy as np
 from artipg.geometry import cylinder
 from artipg.geometry.transforms import rot_y, translation
 from artipg.rules import Category, Slot
-from artipg.templates.carts import (bar, caster_reach, deck, grip_bar, hinged_plate, mount_caster, tube_frame,
-                                    wire_wall)
-from artipg.templates.luggage import GAP, wheel
+from artipg.templates.carts import (TRUCK_WHEELS, WHEELS, bar, caster_reach, deck, grip_bar, hinged_plate, mount_caster,
+                                    tube_frame, wire_wall)
+from artipg.templates.luggage import GAP
 from artipg.model.part import Part
 
 HANG = rot_y(-math.pi / 2)  # plate frames (hinge on the top edge, plate along local -x) turned to hang down
@@ -44,8 +46,10 @@ def _casters(ctx, xs, ys, r, tb, rear_fixed):
     root = ctx.out["frame"][0]
     ww, plate = p.uniform("wheel_width", 0.022, 0.035), p.uniform("fork_plate", 0.003, 0.005)
     drop = r + GAP + tb
+    tmpl = ctx.choose("wheel", WHEELS)
     for i, (x, y) in enumerate((x, y) for x in xs for y in (-ys, ys)):
-        mount_caster(p.scope(f"caster{i}"), b, root, x, y, r, ww, plate, drop, swivel=not (rear_fixed and x == xs[1]))
+        mount_caster(p.scope(f"caster{i}"), b, root, x, y, r, ww, plate, drop, swivel=not (rear_fixed and x == xs[1]),
+                     tmpl=tmpl)
     return drop, caster_reach(r, ww, plate)
 
 
@@ -151,10 +155,11 @@ def _hand_truck(ctx, root):
     root.add(Part("body", "axle_brackets", parts))
     T = translation(xa, 0, rw) @ np.array([[1.0, 0, 0, 0], [0, 0, -1, 0], [0, 1, 0, 0], [0, 0, 0, 1]])
     root.add(Part("body", "axle", [cylinder(ra, 2 * (yw - ww / 2 - GAP), T, role="axle")]))
-    for s in (-1, 1):
+    tmpl = ctx.choose("wheel", TRUCK_WHEELS)
+    for i, s in enumerate((-1, 1)):
         link = b.create_link("wheel", root)
         link.set_joint("continuous", translation(xa, s * yw, rw), axis=(0.0, 1.0, 0.0))
-        link.add(wheel(p, rw, ww))
+        link.add(tmpl(p.scope(f"wheel{i}"), rw, ww))
     rg = p.uniform("grip_radius", 0.014, 0.018)
     root.add(grip_bar(p, xr, -S / 2 - rt - 0.03, S / 2 + rt + 0.03, Hr + rg - rt, rg))
     plate = hinged_plate(p, "flap", Ln, Wn, t)

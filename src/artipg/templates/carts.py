@@ -14,7 +14,7 @@ import math
 
 import numpy as np
 
-from artipg.geometry import cuboid_between, cylinder, ring
+from artipg.geometry import cuboid_between, cylinder, ring, torus
 from artipg.geometry.transforms import rot_x, translation
 from artipg.model.part import Deferred, Grasp, Part, Region
 from artipg.templates.luggage import GAP, fork, wheel
@@ -107,11 +107,38 @@ def hinged_plate(p, semantic: str, length: float, width: float, thickness: float
     return Part(semantic, "hinged_plate", [prim], regions=regions, actionable=actionable)
 
 
+def solid_wheel(p, radius: float, width: float) -> Part:
+    """A solid rubber wheel: a cylinder ``radius`` x ``width`` along y (origin at its centre)."""
+    return wheel(p, radius, width)
+
+
+def tyred_wheel(p, radius: float, width: float) -> Part:
+    """A hub with a round tyre (a torus) on its rim, within ``radius`` and ``width``."""
+    r = min(width / 2, 0.3 * radius)
+    return Part("wheel", "tyred_wheel", [cylinder(radius - r, width, _AXLE_Y, role="hub"),
+                                         torus(radius - r, r, pose=_AXLE_Y, role="tyre")])
+
+
+def disc_wheel(p, radius: float, width: float) -> Part:
+    """A narrower flat tyre (a ring) round a hub ``width`` wide (its faces carry the
+    wheel on its axle or fork), within ``radius``."""
+    ri = p.uniform("rim_ratio", 0.55, 0.7) * radius
+    return Part("wheel", "disc_wheel", [ring(radius, ri, p.uniform("tyre_ratio", 0.6, 0.9) * width, pose=_AXLE_Y,
+                                             role="tyre"),
+                                        cylinder(ri + 0.001, width, _AXLE_Y, role="hub")])
+
+
+WHEELS = {solid_wheel: 1.0, tyred_wheel: 1.5, disc_wheel: 1.0}
+#: Two-wheel trucks stand on their wheels and plate alone: flat-tread wheels only.
+TRUCK_WHEELS = {solid_wheel: 1.0, disc_wheel: 1.5}
+
+
 def mount_caster(p, builder, parent, x: float, y: float, radius: float, width: float, plate: float, drop: float,
-                 swivel: bool) -> None:
+                 swivel: bool, tmpl=solid_wheel) -> None:
     """A caster under ``parent`` with its axle at (x, y, ``radius``): a fork reaching
     ``drop`` above the axle (see :func:`artipg.templates.luggage.fork`) on a swivel
-    (continuous about z) or fixed, and a wheel continuous about its axle (y)."""
+    (continuous about z) or fixed, and a wheel (template ``tmpl``) continuous about its
+    axle (y)."""
     fk = fork(p, radius, width, drop, plate)
     origin = translation(x, y, radius)
     if swivel:
@@ -123,7 +150,7 @@ def mount_caster(p, builder, parent, x: float, y: float, radius: float, width: f
         parent.add(fk, origin)
     w = builder.create_link("wheel", parent)
     w.set_joint("continuous", origin, axis=(0.0, 1.0, 0.0))
-    w.add(wheel(p, radius, width))
+    w.add(tmpl(p, radius, width))
 
 
 def caster_reach(radius: float, width: float, plate: float) -> float:
