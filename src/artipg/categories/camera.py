@@ -34,7 +34,6 @@ from artipg.templates.controls import button_bezel, mount_button, round_button
 
 UP = rot_y(math.pi / 2)      # control frames (protruding -x) turned to protrude +z
 DOWN = rot_y(math.pi / 2)    # plate frames (outer face +x) turned to face -z: bottom doors
-BACK = rot_z(0.0)            # plate frames facing +x: the back face
 # sub-category -> width, height, depth, edge radius
 SUBS = {
     "dslr": ((0.122, 0.148), (0.075, 0.092), (0.045, 0.058), (0.004, 0.008)),

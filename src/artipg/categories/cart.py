@@ -55,8 +55,7 @@ def _casters(ctx, xs, ys, r, tb, rear_fixed):
 
 def frame(ctx):
     """Every sub-category's root: chassis, deck or rails (the casters and handles follow)."""
-    p, b = ctx.p, ctx.builder
-    root = b.create_link("frame")
+    root = ctx.builder.create_link("frame")
     return root, {"shopping": _shopping, "platform": _platform, "hand_truck": _hand_truck}[ctx.sub](ctx, root)
 
 
@@ -64,7 +63,8 @@ def _shopping(ctx, root):
     p = ctx.p
     r, tb = p.uniform("caster_radius", 0.05, 0.0625), p.uniform("fork_top", 0.01, 0.018)
     zc = r + (r + GAP + tb) + GAP  # the rails' bottom over the forks
-    W, Lb, hb = p.uniform("width", 0.5, 0.6), p.uniform("basket_length", 0.6, 0.75), p.uniform("basket_height", 0.3, 0.4)
+    W, Lb = p.uniform("width", 0.5, 0.6), p.uniform("basket_length", 0.6, 0.75)
+    hb = p.uniform("basket_height", 0.3, 0.4)
     zb = p.uniform("basket_bottom", 0.45, 0.55)
     x0, x1 = -Lb / 2, Lb / 2
     wire = p.uniform("wire", 0.005, 0.008)

@@ -115,8 +115,8 @@ def flip(ctx):
     lid.add(slab(p.scope("lid"), "lid", Ll, W, t2, min(r, t2 / 2 - 0.0005), actionable="hinge_lid"),
             translation(-rb - 0.001 - Ll / 2, 0, -t2 / 2))
     lid.add(knuckles(p, "hinge", rb, ((-yc, yc),)))
-    lid.add(Part("hinge", "knuckle_tongue", [cuboid_between((-rb - 0.002, -yc + 0.001, -0.4 * t2), (0.0, yc - 0.001, 0.4 * t2),
-                                                            role="block")]))
+    tongue = cuboid_between((-rb - 0.002, -yc + 0.001, -0.4 * t2), (0.0, yc - 0.001, 0.4 * t2), role="block")
+    lid.add(Part("hinge", "knuckle_tongue", [tongue]))
     ls = min(p.uniform("inner_screen", 0.7, 0.85) * Ll, Ll - 0.006)
     lid.add(display(p.scope("inner"), ls, 0.85 * Wu), translation(-rb - 0.001 - Ll / 2, 0, -t2 / 2) @ FACE_DOWN)
     if p.flag("outer_screen", 0.6):

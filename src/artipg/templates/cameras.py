@@ -105,7 +105,8 @@ def zoom_tube(p, r_out: float, r_in: float, length: float, closed: bool, moving:
     reg = Region(("tube",))
     if not moving:
         return Part("lens", "lens_bezel", [prim], regions={"grasp": reg})
-    return Part("lens", "zoom_tube", [prim], regions={"pull": reg, "push": reg, "grasp": reg}, actionable="slider_drawer")
+    return Part("lens", "zoom_tube", [prim], regions={"pull": reg, "push": reg, "grasp": reg},
+                actionable="slider_drawer")
 
 
 def front_glass(p, radius: float, thickness: float = 0.001) -> Part:

@@ -40,7 +40,8 @@ def wire_wall(p, semantic: str, axis: int, x0: float, x1: float, across: float, 
         lo[axis], hi[axis] = a0, a1
         lo[o], hi[o] = across - h, across + h
         return bar(lo, hi)
-    prims = [box(x0, x1, z0, z0 + wire), box(x0, x1, z1 - wire, z1), box(x0, x0 + wire, z0, z1), box(x1 - wire, x1, z0, z1)]
+    prims = [box(x0, x1, z0, z0 + wire), box(x0, x1, z1 - wire, z1),
+             box(x0, x0 + wire, z0, z1), box(x1 - wire, x1, z0, z1)]
     for i in range(1, n + 1):
         a = x0 + (x1 - x0) * i / (n + 1)
         prims.append(box(a - h * 0.6, a + h * 0.6, z0 + wire, z1 - wire))

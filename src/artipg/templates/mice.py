@@ -14,7 +14,7 @@ import math
 
 import numpy as np
 
-from artipg.geometry import cylinder, prism, torus
+from artipg.geometry import cuboid_between, cylinder, prism, torus
 from artipg.geometry.extrusion import extrusion
 from artipg.geometry.lathe import lathe
 from artipg.geometry.transforms import rot_x, rot_z, translation
@@ -35,7 +35,7 @@ def outline(length: float, width: float, nose: float) -> np.ndarray:
     ``width`` apart, a semicircular back (radius ``width / 2``) and a front arc of
     sagitta ``nose``, the arcs as polylines (caps sample as triangle cells); the front
     tip at x = -length / 2."""
-    x0, x1, w = -length / 2 + nose, length / 2 - width / 2, width / 2
+    x1, w = length / 2 - width / 2, width / 2
     back = _arc_points(x1, 0.0, w, -math.pi / 2, math.pi / 2, 8)
     r = (w * w + nose * nose) / (2 * nose)  # the nose arc's circle, centre on the axis behind the tip
     a = math.asin(w / r)
@@ -67,7 +67,6 @@ def palm_dome(p, x_centre: float, radius: float, z0: float, rise: float) -> Part
 
 def bracket(p, x0: float, x1: float, y: float, top: float) -> Part:
     """Wheel bracket filling the well's footprint from the floor up to ``top``."""
-    from artipg.geometry import cuboid_between
     return Part("body", "wheel_bracket", [cuboid_between((x0, -y, 0.0), (x1, y, top), role="bracket")])
 
 
