@@ -127,6 +127,17 @@ SCHEMES: dict[str, dict] = {
                                     "panel": {"neutral_plastic": 1.0}, "glass": {"glass": 1.0}}},
     "printer": {"families": {"main": {"painted_metal": 1.0}, "accent": {"neutral_plastic": 1.0},
                              "panel": {"neutral_plastic": 1.0}, "display": {"display": 1.0}}},
+    "camera": {"groups": {"lens": "main"},
+               "families": {"main": {"matte_plastic": 0.5, "black_metal": 0.3, "neutral_plastic": 0.2},
+                            "accent": {"black_metal": 0.4, "matte_plastic": 0.3, "chrome": 0.3}, "glass": {"glass": 1.0}},
+               "sub": {"instant": {"main": {"glossy_plastic": 0.6, "neutral_plastic": 0.4}}}},
+    "mouse": {"groups": {"button": "main"}, "families": {"main": {"matte_plastic": 0.5, "glossy_plastic": 0.3, "neutral_plastic": 0.2},
+                           "accent": {"matte_plastic": 0.6, "glossy_plastic": 0.4}}},
+    "phone": {"groups": {"lid": "main", "hinge": "main"},
+              "families": {"main": {"matte_plastic": 0.4, "glossy_plastic": 0.4, "neutral_plastic": 0.2},
+                           "accent": {"matte_plastic": 0.5, "neutral_plastic": 0.5}, "display": {"display": 1.0}}},
+    "cart": {"families": {"main": {"chrome": 0.4, "painted_metal": 0.3, "stainless": 0.3},
+                          "accent": {"black_metal": 0.5, "painted_metal": 0.5}}},
 }
 
 

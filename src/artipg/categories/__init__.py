@@ -17,6 +17,7 @@ from artipg.categories import clip, ruler, lighter
 from artipg.categories import clock, fan, lamp
 from artipg.categories import door_handle, folding_rack
 from artipg.categories import toilet, coffee_machine, printer
+from artipg.categories import camera, mouse, phone, cart
 
 _MODULES = (storage_furniture, eyeglasses, stapler, bottle, switch, bucket, microwave, faucet, kitchen_pot, kettle,
             safe, box, laptop, door, window, trash_can,
@@ -29,6 +30,7 @@ _MODULES = (storage_furniture, eyeglasses, stapler, bottle, switch, bucket, micr
             clock, fan, lamp,
             door_handle, folding_rack,
             toilet, coffee_machine, printer,
+            camera, mouse, phone, cart,
             )
 
 REGISTRY = {m.RULE.name: m.RULE for m in _MODULES}
