@@ -459,7 +459,9 @@ def _partnet_style(src: Path, dest: Path) -> Path:
 def test_validate_command_on_artipg_and_partnet_style_folders(tmp_path):
     good = generate_valid("storage_furniture", 3)
     export_object(good, tmp_path / "ours" / "good", n_points=0)
-    broken = BROKEN["flipped hinge"][0]().generate(0, {"door.swing": "inward"})
+    # the sharp structure: an inward door only fails the sweep (a rounded carcass edge
+    # would also meet it at rest)
+    broken = BROKEN["flipped hinge"][0]().with_detail("off").generate(0, {"door.swing": "inward"})
     export_object(broken, tmp_path / "ours" / "broken", n_points=0)
     _partnet_style(tmp_path / "ours" / "broken", tmp_path / "partnet" / "7128")
     _partnet_style(tmp_path / "ours" / "good", tmp_path / "partnet" / "101")

@@ -75,6 +75,7 @@ MATERIAL = {
     "hand": "aluminium", "pendulum": "brass", "bell": "steel", "rotor": "plastic", "guard": "steel",
     "shade": "steel", "bulb": "glass",
     "lock": "brass", "rail": "aluminium",
+    "container": "plastic", "portafilter": "steel",
 }
 DEFAULT_CLASS = "plastic"
 

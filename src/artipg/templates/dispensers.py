@@ -32,6 +32,9 @@ _ALONG_X = Placer(rot_y(-math.pi / 2))  # local z -> -x
 _ALONG_Y = Placer(rot_x(math.pi / 2))  # local z -> -y (an x-z outline extruded across y)
 
 
+# sides of a trigger sprayer's nozzle cap: square, hexagonal or round
+NOZZLE_SIDES = {4: 2.0, 6: 1.0, 16: 1.0}
+
 def oval_body(p, radius: float, height: float, neck_r: float, neck_h: float, flat=(0.45, 0.8),
               across: bool = False) -> Part:
     """Flat bottle: a rounded box ``2 radius`` long (x, the way the head points; y with
@@ -237,7 +240,7 @@ def trigger_sprayer(p, builder, parent, pose, neck, trigger_pull=(0.3, 0.6), noz
     tl.add(trig)
     rc = min(p.uniform("nozzle_radius", 0.004, 0.007), hn_ / 2, ws / 2)
     lc = p.uniform("nozzle_length", 0.005, 0.012)
-    sides = p.choice("nozzle_sides", {4: 2.0, 6: 1.0, 16: 1.0})
+    sides = p.choice("nozzle_sides", NOZZLE_SIDES)
     nozzle = Part("nozzle", "nozzle_cap", [prism(rc, lc, sides, _ALONG_X.at(-lc / 2), role="cap")],
                   regions={"rotate": Region(("cap",)), "grasp": Region(("cap",))},
                   grasps=Deferred.one(front_pinch, -0.3 * lc, 0.0, 2 * rc + 0.02, (0.0, 0.0, 0.0)),
