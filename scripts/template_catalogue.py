@@ -51,7 +51,8 @@ def defining_module(name: str) -> str:
     files = [(f"{sub}.{path.stem}", path.read_text()) for sub in ("templates", "categories")
              for path in sorted((src / sub).glob("*.py"))]
     # a literal name, else a name made by an f-string ('{kind}_jaw')
-    for needle in (f'"{name}"', '}_' + name.split("_", 1)[-1] + '"', '}_' + name.rsplit("_", 1)[-1] + '"'):
+    for needle in (f'"{name}"', '}_' + name.split("_", 1)[-1] + '"', '}_' + name.rsplit("_", 1)[-1] + '"',
+                   '"' + name.rsplit("_", 1)[0] + '_{'):
         for module, text in files:
             if needle in text:
                 return module

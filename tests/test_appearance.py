@@ -245,3 +245,31 @@ def test_round_table_tops_are_mapped_flat():
     from artipg.appearance.textures import TILE_METRES
 
     assert np.allclose(UV[top] * TILE_METRES, V[top, :2] + 0.4)
+
+
+def test_rules_carry_graduations_at_their_real_spacing():
+    """Rule segments, arms and tape blades wear a printed scale: ticks every millimetre of
+    surface (texture space is metres), centimetre ticks longer than millimetre ones,
+    the ground in the part's own colour; the same seed gives the same image."""
+    from artipg.appearance.textures import TILE_METRES
+
+    for seed in range(6):
+        obj = artipg.generate("ruler", seed)
+        mats = materials_of(obj)
+        marked = [mats[p.name] for p in obj.parts if p.semantic in ("segment", "arm", "blade")]
+        assert marked and all(m.texture == "scale" for m in marked)
+        others = [mats[p.name] for p in obj.parts if p.semantic not in ("segment", "arm", "blade")]
+        assert all(m.texture != "scale" for m in others)
+    m = marked[0]
+    img = texture_image(m.texture, m.texture_params)
+    size = img.shape[0]
+    ground = np.rint(np.array(m.color) * 255)
+    inked = (np.abs(img.astype(int) - ground).sum(axis=2) > 60)  # (rows, cols)
+    tick = inked[:, 0]  # every tick starts at the edge u = 0
+    rows = np.flatnonzero(tick & ~np.roll(tick, -1))  # one row per tick (its last line)
+    mm = np.diff(np.sort(rows)) / size * TILE_METRES
+    assert len(rows) == round(TILE_METRES * 1000)
+    assert np.allclose(mm, 0.001, atol=TILE_METRES / size)
+    lengths = inked.sum(axis=1)[rows]
+    assert lengths.max() > 2 * lengths.min()  # centimetre ticks reach further in
+    assert np.array_equal(img, texture_image(m.texture, m.texture_params))

@@ -19,6 +19,7 @@ from __future__ import annotations
 import numpy as np
 
 from artipg.appearance.families import draw
+from artipg.appearance.markings import with_markings
 from artipg.appearance.material import Material
 from artipg.materials import FINISHES, material_class
 from artipg.rules.streams import stream_key
@@ -195,4 +196,4 @@ def materials_of(obj) -> dict[str, Material]:
                 family = _pick(fit or allowed, rng, chosen.get("main") if group == "accent" else None)
             mat = made[key] = draw(family, rng, f"{group}_{cls}", cls)
         out[part.name] = mat
-    return out
+    return with_markings(obj, out)

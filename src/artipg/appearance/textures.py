@@ -1,4 +1,5 @@
-"""Procedural texture images: wood grain, brushed metal and fine noise (numpy only).
+"""Procedural texture images: wood grain, brushed metal, fine noise and printed rule
+graduations (numpy only).
 
 Every image is a function of the material's ``texture_params`` alone (their first entry
 seeds the noise), so the same object gives the same bytes. Images tile seamlessly: the
@@ -60,17 +61,39 @@ def _noise(params, size: int) -> np.ndarray:
     return np.array([r, g, b]) * (1.0 + strength * n)[..., None]
 
 
-_KINDS = {"wood": _wood, "brushed": _brushed, "noise": _noise}
+def _scale(params, size: int) -> np.ndarray:
+    """Printed graduations of a rule: millimetre, half-centimetre and centimetre ticks
+    along v (rows), starting at v = 0 (a part's end) and reaching in from u = 0 (its
+    edge), on a plain ground (plain rows keep the large image small as PNG)."""
+    seed, r, g, b, ir, ig, ib = params
+    img = np.empty((size, size, 3), dtype=np.float32)
+    img[:] = np.array([r, g, b], dtype=np.float32)
+    px = size / TILE_METRES  # pixels per metre
+    k = np.arange(int(round(TILE_METRES * 1000)))  # one tick per millimetre of the tile
+    length = np.rint(np.where(k % 10 == 0, 0.0045, np.where(k % 5 == 0, 0.003, 0.0018)) * px).astype(int)
+    rows = (size - 1 - np.floor(k * 0.001 * px).astype(int)) % size  # row 0 is v = 1
+    ink = np.array([ir, ig, ib], dtype=np.float32)
+    for d in range(max(1, int(round(0.0002 * px)))):  # printed lines 0.2 mm wide
+        for row, n in zip((rows - d) % size, length):
+            img[row, :n] = ink
+    return img
 
 
-def texture_image(kind: str, params, size: int = SIZE) -> np.ndarray:
+_KINDS = {"wood": _wood, "brushed": _brushed, "noise": _noise, "scale": _scale}
+#: Image side (pixels) of the kinds that need finer detail than :data:`SIZE`
+#: (millimetre ticks: 0.24 mm per pixel).
+KIND_SIZE = {"scale": 2048}
+
+
+def texture_image(kind: str, params, size: int | None = None) -> np.ndarray:
     """The texture image (size, size, 3) uint8, sRGB, of kind ``kind`` with ``params``
-    (:attr:`artipg.appearance.Material.texture_params`); row 0 is v = 1 (image order)."""
+    (:attr:`artipg.appearance.Material.texture_params`); row 0 is v = 1 (image order).
+    ``size`` defaults to the kind's (:data:`KIND_SIZE`, else :data:`SIZE`)."""
     try:
         fn = _KINDS[kind]
     except KeyError:
         raise ValueError(f"unknown texture kind {kind!r}; known: {', '.join(_KINDS)}") from None
-    img = fn(tuple(params), size)
+    img = fn(tuple(params), size or KIND_SIZE.get(kind, SIZE))
     return np.clip(np.rint(img * 255.0), 0, 255).astype(np.uint8)
 
 
@@ -87,6 +110,6 @@ def png_bytes(img: np.ndarray) -> bytes:
             + chunk(b"IDAT", zlib.compress(raw, 1)) + chunk(b"IEND", b""))
 
 
-def texture_png(material, size: int = SIZE) -> bytes:
+def texture_png(material, size: int | None = None) -> bytes:
     """PNG bytes of ``material``'s texture image (its ``texture_file``)."""
     return png_bytes(texture_image(material.texture, material.texture_params, size))

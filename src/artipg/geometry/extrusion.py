@@ -238,7 +238,8 @@ class Extrusion(Family):
         loops = self.loops(p)
         b = profile.bounds(loops[0])
         total = sum(profile.perimeter(l)[-1] for l in loops)
-        return np.array([[0.0, 0.0], [max(total, b[1, 0] - b[0, 0]), max(float(p[-2]), b[1, 1] - b[0, 1])]])
+        side = float((b[1] - b[0]).max())  # caps run v along the outline's longer side
+        return np.array([[0.0, 0.0], [max(total, side), max(float(p[-2]), side)]])
 
     def uv_seams(self, p, n=None):
         offs = np.concatenate([[0.0], np.cumsum([profile.perimeter(l)[-1] for l in self.loops(p)])])
@@ -248,7 +249,8 @@ class Extrusion(Family):
         """Sides: u = arc length (m) along the closest loop (holes continue after the
         outer loop's perimeter), v = z + h/2 (m). Caps (|nz| > 0.999 on a straight
         extrusion, the cap planes otherwise): planar, u = x - x_min, v = y - y_min of the
-        unscaled outline (m)."""
+        unscaled outline (m), swapped where the outline is longer along x (v runs along
+        the longer side, as on box faces)."""
         x = np.asarray(x, dtype=float)
         h, k = float(p[-2]), float(p[-1])
         s = 1.0 + (k - 1.0) * np.clip(x[:, 2] / h + 0.5, 0.0, 1.0)
@@ -266,8 +268,10 @@ class Extrusion(Family):
         cap = np.abs(np.abs(x[:, 2]) - h / 2) <= 1e-9 * max(h, 1.0)
         if n is not None:
             cap &= np.abs(np.asarray(n)[:, 2]) > 0.999 if k == 1.0 else cap
-        return np.column_stack([np.where(cap, q[:, 0] - b[0, 0], u_side),
-                                np.where(cap, q[:, 1] - b[0, 1], x[:, 2] + h / 2)])
+        cu, cv = q[:, 0] - b[0, 0], q[:, 1] - b[0, 1]
+        if b[1, 0] - b[0, 0] > b[1, 1] - b[0, 1]:  # v along the outline's longer side
+            cu, cv = cv, cu
+        return np.column_stack([np.where(cap, cu, u_side), np.where(cap, cv, x[:, 2] + h / 2)])
 
 
 def _tris(comp, o, a, b, n, scale):
