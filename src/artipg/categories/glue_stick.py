@@ -62,7 +62,7 @@ def cap(ctx):
 RULE = Category(
     name="glue_stick",
     subcategories={"standard": 3.0, "jumbo": 1.5, "slim": 1.5},
-    materials={"refill": "plastic"},
+    materials={"body": "plastic", "refill": "plastic"},
     mass_range=(0.008, 0.12),  # kg: 8 g slim sticks to 43 g jumbo ones with their tubes
     slots=(Slot("body", body), Slot("glue", glue, after=("body",)), Slot("cap", cap, after=("body",))),
 )

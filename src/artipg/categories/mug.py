@@ -112,7 +112,7 @@ def _travel(ctx, root, lip, rim):
 RULE = Category(
     name="mug",
     subcategories={"lidded_mug": 2.0, "travel_mug": 2.0, "beer_stein": 1.5},
-    materials={"body": "glass", "handle": "glass", "lid": "plastic", "hinge": "steel"},  # glass: ceramic's density
+    materials={"body": "ceramic", "handle": "ceramic", "lid": "plastic", "hinge": "steel", "flap": "plastic"},
     mass_range=(0.1, 2.0),  # kg: travel mugs (~0.3 kg) to stoneware steins with pewter lids (~1.2 kg)
     slots=(Slot("body", body), Slot("lid", lid, after=("body",))),
 )

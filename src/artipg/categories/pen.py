@@ -87,7 +87,7 @@ def body(ctx):
 RULE = Category(
     name="pen",
     subcategories={"click_pen": 3.0, "capped_pen": 2.0, "twist_pen": 1.5},
-    materials={"clip": "steel", "refill": "brass"},
+    materials={"body": "plastic", "clip": "steel", "refill": "brass"},
     mass_range=(0.003, 0.06),  # kg: disposable ballpoints (~5 g) to metal twist pens (~30 g)
     slots=(Slot("body", body),),
 )

@@ -72,7 +72,7 @@ def _retractable(ctx, root, conn):
 RULE = Category(
     name="usb",
     subcategories={"capped": 2.0, "swivel": 2.0, "retractable": 1.5},
-    materials={"connector": "steel", "cover": "steel"},
+    materials={"body": "plastic", "connector": "steel", "cover": "steel"},
     mass_range=(0.002, 0.05),  # kg: plastic sticks (~5 g) to metal swivel drives (~20 g)
     slots=(Slot("drive", drive),),
 )
