@@ -155,10 +155,10 @@ class Category:
             hit = _VARIANTS[key] = (self, replace(self, detail=d))
         return hit[1]
 
-    def generate(self, seed: int, overrides: dict | None = None, detail: str | None = None) -> ArticulatedObject:
-        """Build the object for ``seed`` (with optional parameter overrides) at detail
-        level ``detail`` (None: :attr:`detail`)."""
-        mode = self.detail if detail is None else parse_detail(detail)
+    def generate(self, seed: int, overrides: dict | None = None) -> ArticulatedObject:
+        """Build the object for ``seed`` (with optional parameter overrides) at this
+        category's detail level (:meth:`with_detail` gives another)."""
+        mode = self.detail
         fine = mode != "off"
         record: dict = {}
         templates: dict = {}
