@@ -64,7 +64,7 @@ class SlotContext:
     def choose_detail(self, name: str, options, off):
         """Choose a detail template (weighted dict or list) from the slot's detail
         stream and record it; ``off`` (not recorded) when detail is off."""
-        if self.p._fine is None:
+        if self.p.detail == "off":
             return off
         t, chosen = self.p._detail_recorder()._pick(name, options)
         self.templates.setdefault(self.slot, []).append(chosen)
